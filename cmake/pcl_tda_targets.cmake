@@ -1,0 +1,31 @@
+# pcl_tda_add_library(<module> SOURCES <src>... LINK <target>...)
+#
+# Adds the shared library pcl_tda_<module> of one module folder, with its public
+# headers under <module>/include, exported as pcl_tda::<module>.
+function(pcl_tda_add_library module)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LINK" ${ARGN})
+  set(target pcl_tda_${module})
+  add_library(${target} SHARED ${ARG_SOURCES})
+  add_library(pcl_tda::${module} ALIAS ${target})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${module}
+                                             VERSION ${PROJECT_VERSION})
+  target_include_directories(${target} PUBLIC
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
+    $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/pcl_tda>)
+  target_link_libraries(${target} PUBLIC ${ARG_LINK})
+  install(TARGETS ${target} EXPORT pcl_tdaTargets
+          LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+          RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+  install(DIRECTORY include/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/pcl_tda)
+endfunction()
+
+# pcl_tda_add_tool(<name> SOURCES <src>... LINK <target>...)
+#
+# Adds the command-line tool pcl_tda_<name>, installed beside PCL's own tools.
+function(pcl_tda_add_tool name)
+  cmake_parse_arguments(ARG "" "" "SOURCES;LINK" ${ARGN})
+  add_executable(pcl_tda_${name} ${ARG_SOURCES})
+  target_link_libraries(pcl_tda_${name} PRIVATE ${ARG_LINK})
+  install(TARGETS pcl_tda_${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+endfunction()
