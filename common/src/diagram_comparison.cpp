@@ -1,0 +1,207 @@
+#include <pcl/tda/common/diagram_comparison.h>
+#include <pcl/exceptions.h>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <iterator>
+#include <limits>
+#include <map>
+#include <set>
+#include <sstream>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+namespace {
+
+/** Values closer than this match whatever the relative tolerance. */
+constexpr double ABSOLUTE_TOLERANCE = 1e-12;
+
+bool
+valuesMatch (double x, double y, double relative_tolerance)
+{
+  if (x == y)
+    return true;
+  if (std::isinf (x) || std::isinf (y))
+    return false;
+  return std::abs (x - y) <=
+         std::max (relative_tolerance * std::max (std::abs (x), std::abs (y)),
+                   ABSOLUTE_TOLERANCE);
+}
+
+bool
+byValue (const PersistenceInterval& a, const PersistenceInterval& b)
+{
+  return std::tie (a.dimension, a.birth, a.death) <
+         std::tie (b.dimension, b.birth, b.death);
+}
+
+/** The intervals of \a diagram that are not of length zero, sorted by value. */
+PersistenceDiagram
+nonZeroIntervals (const PersistenceDiagram& diagram,
+                  const char* name,
+                  double relative_tolerance)
+{
+  PersistenceDiagram kept;
+  kept.reserve (diagram.size());
+  for (std::size_t i = 0; i < diagram.size(); ++i) {
+    const auto& interval = diagram[i];
+    if (std::isnan (interval.birth) || std::isnan (interval.death))
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "interval " << i << " of the " << name
+                                       << " diagram has a NaN value");
+    if (!valuesMatch (interval.birth, interval.death, relative_tolerance))
+      kept.push_back (interval);
+  }
+  std::sort (kept.begin(), kept.end(), byValue);
+  return kept;
+}
+
+/** Matches the intervals \a first[0, \a first_size) to \a second[0, \a
+ * second_size), all of one dimension and sorted by value, and records the result.
+ *
+ * A window slides over \a second: it holds, keyed by death, the unmatched intervals
+ * whose birth matches the birth of the current interval of \a first. */
+void
+matchDimension (const PersistenceInterval* first,
+                std::size_t first_size,
+                const PersistenceInterval* second,
+                std::size_t second_size,
+                double relative_tolerance,
+                DiagramComparison& result)
+{
+  std::set<std::pair<double, std::size_t>> window;
+  std::vector<bool> matched (second_size, false);
+  std::size_t window_begin = 0, window_end = 0;
+  for (std::size_t i = 0; i < first_size; ++i) {
+    const double birth = first[i].birth;
+    const double death = first[i].death;
+    for (; window_end < second_size &&
+           (second[window_end].birth <= birth ||
+            valuesMatch (birth, second[window_end].birth, relative_tolerance));
+         ++window_end)
+      window.emplace (second[window_end].death, window_end);
+    for (; window_begin < window_end && second[window_begin].birth < birth &&
+           !valuesMatch (birth, second[window_begin].birth, relative_tolerance);
+         ++window_begin)
+      window.erase ({second[window_begin].death, window_begin});
+
+    // The closest deaths are the neighbours of death in the window.
+    auto best = window.end();
+    double best_distance = std::numeric_limits<double>::infinity();
+    const auto above = window.lower_bound ({death, 0});
+    for (auto candidate :
+         {above, above == window.begin() ? window.end() : std::prev (above)}) {
+      if (candidate == window.end() ||
+          !valuesMatch (death, candidate->first, relative_tolerance))
+        continue;
+      const double distance =
+          candidate->first == death ? 0.0 : std::abs (candidate->first - death);
+      if (distance < best_distance) {
+        best = candidate;
+        best_distance = distance;
+      }
+    }
+    if (best == window.end()) {
+      result.only_in_first.push_back (first[i]);
+      continue;
+    }
+    matched[best->second] = true;
+    window.erase (best);
+    ++result.matched;
+  }
+  for (std::size_t j = 0; j < second_size; ++j)
+    if (!matched[j])
+      result.only_in_second.push_back (second[j]);
+}
+
+std::string
+formatValue (double value)
+{
+  if (value == std::numeric_limits<double>::infinity())
+    return "inf";
+  char buffer[32];
+  const auto result = std::to_chars (buffer, buffer + sizeof (buffer), value);
+  return std::string (buffer, result.ptr);
+}
+
+/** Writes the counts per dimension of \a diagram and its first \a max_listed
+ * intervals, under the title \a title. */
+void
+describeUnmatched (std::ostream& out,
+                   const char* title,
+                   const PersistenceDiagram& diagram,
+                   std::size_t max_listed)
+{
+  std::map<int, std::size_t> counts;
+  for (const auto& interval : diagram)
+    ++counts[interval.dimension];
+  out << "\n" << diagram.size() << " only in the " << title;
+  const char* separator = " (";
+  for (const auto& [dimension, count] : counts) {
+    out << separator << "H" << dimension << ": " << count;
+    separator = ", ";
+  }
+  out << (counts.empty() ? "" : ")");
+  const std::size_t listed = std::min (max_listed, diagram.size());
+  for (std::size_t i = 0; i < listed; ++i)
+    out << "\n  H" << diagram[i].dimension << " [" << formatValue (diagram[i].birth)
+        << ", " << formatValue (diagram[i].death) << ")";
+  if (listed < diagram.size())
+    out << "\n  ... and " << diagram.size() - listed << " more";
+}
+
+} // namespace
+
+std::string
+DiagramComparison::summary (std::size_t max_listed) const
+{
+  std::ostringstream out;
+  if (equal) {
+    out << "diagrams are equal: " << matched << " intervals matched";
+    return out.str();
+  }
+  out << "diagrams differ: " << matched << " intervals matched";
+  describeUnmatched (out, "first", only_in_first, max_listed);
+  describeUnmatched (out, "second", only_in_second, max_listed);
+  return out.str();
+}
+
+DiagramComparison
+compareDiagrams (const PersistenceDiagram& first,
+                 const PersistenceDiagram& second,
+                 double relative_tolerance)
+{
+  if (!(relative_tolerance >= 0.0 && relative_tolerance < 1.0))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "relative tolerance " << relative_tolerance
+                                               << " is not in [0, 1)");
+  const PersistenceDiagram a = nonZeroIntervals (first, "first", relative_tolerance);
+  const PersistenceDiagram b = nonZeroIntervals (second, "second", relative_tolerance);
+  DiagramComparison result{false, 0, {}, {}};
+  std::size_t i = 0, j = 0;
+  while (i < a.size() || j < b.size()) {
+    const int dimension =
+        j == b.size() || (i < a.size() && a[i].dimension < b[j].dimension)
+            ? a[i].dimension
+            : b[j].dimension;
+    std::size_t i_end = i, j_end = j;
+    while (i_end < a.size() && a[i_end].dimension == dimension)
+      ++i_end;
+    while (j_end < b.size() && b[j_end].dimension == dimension)
+      ++j_end;
+    matchDimension (
+        a.data() + i, i_end - i, b.data() + j, j_end - j, relative_tolerance, result);
+    i = i_end;
+    j = j_end;
+  }
+  result.equal = result.only_in_first.empty() && result.only_in_second.empty();
+  return result;
+}
+
+} // namespace tda
+} // namespace pcl

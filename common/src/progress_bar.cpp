@@ -5,35 +5,35 @@
 namespace pcl {
 namespace tda {
 
-ProgressBar::ProgressBar(std::string label, std::size_t total, std::FILE* stream)
-: label_(std::move(label))
-, total_(total)
-, stream_(stream)
-, enabled_(::isatty(::fileno(stream)) != 0)
+ProgressBar::ProgressBar (std::string label, std::size_t total, std::FILE* stream)
+: label_ (std::move (label))
+, total_ (total)
+, stream_ (stream)
+, enabled_ (::isatty (::fileno (stream)) != 0)
 {}
 
 ProgressBar::~ProgressBar() { finish(); }
 
 void
-ProgressBar::update(std::size_t done)
+ProgressBar::update (std::size_t done)
 {
   if (!enabled_ || finished_)
     return;
-  const int percent = total_ == 0 ? 100 : static_cast<int>(100.0 * done / total_);
+  const int percent = total_ == 0 ? 100 : static_cast<int> (100.0 * done / total_);
   if (percent == shown_percent_)
     return;
   shown_percent_ = percent;
   constexpr int WIDTH = 40;
   const int filled = percent * WIDTH / 100;
-  std::fprintf(stream_,
-               "\r%s [%.*s%*s] %3d%%",
-               label_.c_str(),
-               filled,
-               "========================================",
-               WIDTH - filled,
-               "",
-               percent);
-  std::fflush(stream_);
+  std::fprintf (stream_,
+                "\r%s [%.*s%*s] %3d%%",
+                label_.c_str(),
+                filled,
+                "========================================",
+                WIDTH - filled,
+                "",
+                percent);
+  std::fflush (stream_);
 }
 
 void
@@ -41,8 +41,8 @@ ProgressBar::finish()
 {
   if (!enabled_ || finished_)
     return;
-  update(total_);
-  std::fputc('\n', stream_);
+  update (total_);
+  std::fputc ('\n', stream_);
   finished_ = true;
 }
 

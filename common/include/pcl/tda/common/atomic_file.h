@@ -14,14 +14,14 @@ namespace tda {
  * removed and \a path is left as it was)
  */
 void
-writeFileAtomically(const std::string& path,
-                    const std::function<void(std::ostream&)>& writer,
-                    bool binary = false);
+writeFileAtomically (const std::string& path,
+                     const std::function<void (std::ostream&)>& writer,
+                     bool binary = false);
 
 /** \brief True when \a a and \a b name the same existing file (after resolving
  * links), so that a tool can refuse to overwrite its input. */
 bool
-isSameFile(const std::string& a, const std::string& b);
+isSameFile (const std::string& a, const std::string& b);
 
 } // namespace tda
 } // namespace pcl

@@ -55,16 +55,17 @@ public:
 
   /** \brief Takes parts that are already in filtration order and checks them.
    * \param[in] num_vertices number of vertices
-   * \param[in] edges edges sorted by (value, source, target), source < target
+   * \param[in] edges edges sorted by (value, source, target), source < target, on
+   * distinct vertex pairs (not checked here: fromLists() and the readers check it)
    * \param[in] triangles triangles sorted by (value, edges), each no younger than
    * its edges, whose three edges form a triangle
    * \param[in] point_indices input point index of each vertex (empty: identity)
    * \throws pcl::BadArgumentException when a part is out of order or invalid
    */
-  FilteredComplex(std::size_t num_vertices,
-                  std::vector<FilteredEdge> edges,
-                  std::vector<FilteredTriangle> triangles,
-                  std::vector<int> point_indices = {});
+  FilteredComplex (std::size_t num_vertices,
+                   std::vector<FilteredEdge> edges,
+                   std::vector<FilteredTriangle> triangles,
+                   std::vector<int> point_indices = {});
 
   /** \brief Builds a complex from plain lists in any order, e.g. for tests and
    * random complexes. A triangle is given by its vertices; its value is the largest
@@ -73,65 +74,65 @@ public:
    * vertex out of range
    */
   static FilteredComplex
-  fromLists(std::size_t num_vertices,
-            std::vector<FilteredEdge> edges,
-            const std::vector<std::array<SimplexIndex, 3>>& triangles);
+  fromLists (std::size_t num_vertices,
+             std::vector<FilteredEdge> edges,
+             const std::vector<std::array<SimplexIndex, 3>>& triangles);
 
   std::size_t
-  numVertices() const
+  numVertices () const
   {
     return num_vertices_;
   }
 
   std::size_t
-  numEdges() const
+  numEdges () const
   {
     return edges_.size();
   }
 
   std::size_t
-  numTriangles() const
+  numTriangles () const
   {
     return triangles_.size();
   }
 
   /** \brief Total number of simplices of all dimensions. */
   std::size_t
-  numSimplices() const
+  numSimplices () const
   {
     return num_vertices_ + edges_.size() + triangles_.size();
   }
 
   const std::vector<FilteredEdge>&
-  edges() const
+  edges () const
   {
     return edges_;
   }
 
   const std::vector<FilteredTriangle>&
-  triangles() const
+  triangles () const
   {
     return triangles_;
   }
 
   /** \brief Input point index of every vertex. */
   const std::vector<int>&
-  pointIndices() const
+  pointIndices () const
   {
     return point_indices_;
   }
 
   /** \brief Filtration value of a simplex (0 for vertices). */
   double
-  value(const SimplexRef& simplex) const;
+  value (const SimplexRef& simplex) const;
 
   /** \brief The three vertices of a triangle, in increasing order. */
   std::array<SimplexIndex, 3>
-  triangleVertices(SimplexIndex triangle) const;
+  triangleVertices (SimplexIndex triangle) const;
 
   /** \brief All simplices in global filtration order. */
   std::vector<SimplexRef>
-  filtrationOrder() const;
+  filtrationOrder () const;
 
 private:
   std::size_t num_vertices_ = 0;

@@ -17,7 +17,7 @@ struct PersistenceInterval {
   double death;
 
   bool
-  isEssential() const
+  isEssential () const
   {
     return death == std::numeric_limits<double>::infinity();
   }
@@ -37,7 +37,7 @@ struct PersistencePair {
   double death;
 
   bool
-  isEssential() const
+  isEssential () const
   {
     return death_simplex == INVALID_SIMPLEX;
   }
@@ -56,7 +56,7 @@ struct PersistenceResult {
   /** \brief The diagram of dimensions <= \a max_dimension, without zero-length
    * intervals. */
   PersistenceDiagram
-  diagram(int max_dimension = 2) const;
+  diagram (int max_dimension = 2) const;
 };
 
 } // namespace tda

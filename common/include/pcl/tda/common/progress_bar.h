@@ -12,16 +12,16 @@ namespace tda {
  * when its stream is a terminal (so logs and pipes stay clean). */
 class ProgressBar {
 public:
-  ProgressBar(std::string label, std::size_t total, std::FILE* stream = stderr);
+  ProgressBar (std::string label, std::size_t total, std::FILE* stream = stderr);
   ~ProgressBar();
 
   /** \brief Reports that \a done of the total units of work are finished. */
   void
-  update(std::size_t done);
+  update (std::size_t done);
 
   /** \brief Draws the bar at 100% and ends its line. */
   void
-  finish();
+  finish ();
 
 private:
   std::string label_;

@@ -12,14 +12,14 @@ namespace tda {
  * halving: near-constant amortized time per operation (thesis Sec 4.1.4). */
 class UnionFind {
 public:
-  explicit UnionFind(std::size_t n) : parent_(n), size_(n, 1)
+  explicit UnionFind (std::size_t n) : parent_ (n), size_ (n, 1)
   {
-    std::iota(parent_.begin(), parent_.end(), std::uint32_t{0});
+    std::iota (parent_.begin(), parent_.end(), std::uint32_t{0});
   }
 
   /** \brief The representative of the set holding \a x. */
   std::uint32_t
-  find(std::uint32_t x)
+  find (std::uint32_t x)
   {
     while (parent_[x] != x) {
       parent_[x] = parent_[parent_[x]];
@@ -31,10 +31,10 @@ public:
   /** \brief Merges the sets with representatives \a a and \a b (a != b) and returns
    * the representative of the union. */
   std::uint32_t
-  linkRoots(std::uint32_t a, std::uint32_t b)
+  linkRoots (std::uint32_t a, std::uint32_t b)
   {
     if (size_[a] < size_[b])
-      std::swap(a, b);
+      std::swap (a, b);
     parent_[b] = a;
     size_[a] += size_[b];
     return a;
@@ -42,7 +42,7 @@ public:
 
   /** \brief Number of elements in the set whose representative is \a root. */
   std::uint32_t
-  setSize(std::uint32_t root) const
+  setSize (std::uint32_t root) const
   {
     return size_[root];
   }

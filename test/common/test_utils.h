@@ -1,0 +1,84 @@
+#pragma once
+
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/persistence_diagram.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+namespace test {
+
+/** A random filtered flag complex (or a random subset of its triangles) for
+ * oracle tests. With \a integer_values the edge values are small integers, so
+ * many simplices share a filtration value. */
+inline FilteredComplex
+randomComplex (std::mt19937& random, bool integer_values, bool all_triangles)
+{
+  const std::size_t n = std::uniform_int_distribution<std::size_t> (1, 18) (random);
+  const double density = std::uniform_real_distribution<double> (0.1, 0.9) (random);
+  std::bernoulli_distribution keep_edge (density), keep_triangle (0.7);
+  std::uniform_int_distribution<int> integer_value (0, 6);
+  std::uniform_real_distribution<double> real_value (0.0, 1.0);
+
+  std::vector<FilteredEdge> edges;
+  std::vector<std::vector<bool>> adjacent (n, std::vector<bool> (n, false));
+  for (SimplexIndex u = 0; u < n; ++u)
+    for (SimplexIndex v = u + 1; v < n; ++v)
+      if (keep_edge (random)) {
+        const double value =
+            integer_values ? integer_value (random) : real_value (random);
+        edges.push_back ({u, v, value});
+        adjacent[u][v] = adjacent[v][u] = true;
+      }
+  std::vector<std::array<SimplexIndex, 3>> triangles;
+  for (SimplexIndex u = 0; u < n; ++u)
+    for (SimplexIndex v = u + 1; v < n; ++v)
+      for (SimplexIndex w = v + 1; w < n; ++w)
+        if (adjacent[u][v] && adjacent[u][w] && adjacent[v][w] &&
+            (all_triangles || keep_triangle (random)))
+          triangles.push_back ({u, v, w});
+  std::shuffle (edges.begin(), edges.end(), random);
+  std::shuffle (triangles.begin(), triangles.end(), random);
+  return FilteredComplex::fromLists (n, edges, triangles);
+}
+
+/** The k-th case of the standard random suite: varied sizes, ties, subsets. */
+inline FilteredComplex
+randomComplexCase (unsigned int k)
+{
+  std::mt19937 random (20261122u + k);
+  return randomComplex (random, k % 2 == 0, k % 3 != 0);
+}
+
+/** Number of cases of the random suite (the issue asks for at least 1000). */
+constexpr unsigned int RANDOM_CASES = 1200;
+
+/** The finite pairs of \a result as sorted (birth, death) positions in the global
+ * filtration order, the form PHAT reports. */
+inline std::vector<std::pair<std::int64_t, std::int64_t>>
+globalPairs (const FilteredComplex& complex, const PersistenceResult& result)
+{
+  const auto order = complex.filtrationOrder();
+  std::vector<std::int64_t> position[3];
+  position[0].resize (complex.numVertices());
+  position[1].resize (complex.numEdges());
+  position[2].resize (complex.numTriangles());
+  for (std::size_t g = 0; g < order.size(); ++g)
+    position[order[g].dimension][order[g].index] = static_cast<std::int64_t> (g);
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
+  for (const auto& pair : result.pairs)
+    if (!pair.isEssential())
+      pairs.emplace_back (position[pair.dimension][pair.birth_simplex],
+                          position[pair.dimension + 1][pair.death_simplex]);
+  std::sort (pairs.begin(), pairs.end());
+  return pairs;
+}
+
+} // namespace test
+} // namespace tda
+} // namespace pcl
