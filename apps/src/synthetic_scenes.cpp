@@ -1,0 +1,807 @@
+#include <pcl/tda/apps/synthetic_scenes.h>
+#include <pcl/exceptions.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+
+namespace pcl {
+namespace tda {
+namespace {
+
+constexpr double PI = 3.14159265358979323846;
+
+/** Noise is Gaussian, redrawn beyond this many standard deviations. */
+constexpr double NOISE_TRUNCATION = 4.0;
+/** Colour noise is Gaussian, redrawn beyond this many standard deviations. */
+constexpr double COLOUR_NOISE_TRUNCATION = 3.0;
+
+/** suggested_radius = RADIUS_PER_SPACING * h + RADIUS_PER_SIGMA * sigma, where h is
+ * the sampling cell size (arc length per point on the circle, square root of the
+ * area per point on surfaces). Calibrated with Ripser (see the tests). */
+constexpr double RADIUS_PER_SPACING = 4.0;
+constexpr double RADIUS_PER_SIGMA = 7.0;
+
+/** Tabletop object sizes, in metres. */
+constexpr double BOX_MIN_SIDE = 0.06, BOX_MAX_SIDE = 0.16;
+constexpr double BOX_MIN_HEIGHT = 0.05, BOX_MAX_HEIGHT = 0.20;
+constexpr double CYLINDER_MIN_RADIUS = 0.03, CYLINDER_MAX_RADIUS = 0.06;
+constexpr double CYLINDER_MIN_HEIGHT = 0.06, CYLINDER_MAX_HEIGHT = 0.20;
+constexpr double SPHERE_MIN_RADIUS = 0.03, SPHERE_MAX_RADIUS = 0.07;
+constexpr double MAX_OBJECT_HEIGHT = 0.20;
+/** Free border between the objects and the table edge, in metres. */
+constexpr double TABLE_MARGIN = 0.02;
+/** Largest sampling cell: the smallest object must still get a few points. */
+constexpr double MAX_POINT_SPACING = 0.02;
+/** Upper bound on the number of table samples, to refuse absurd densities. */
+constexpr double MAX_TABLE_SAMPLES = 5e7;
+constexpr int MAX_PLACEMENT_ATTEMPTS = 1000;
+constexpr int MAX_LAYOUT_ATTEMPTS = 100;
+
+using Colour = std::array<std::uint8_t, 3>;
+const Colour TABLE_COLOUR = {150, 110, 75};
+const std::array<Colour, MAX_TABLETOP_OBJECTS> OBJECT_PALETTE = {{{210, 40, 40},
+                                                                  {40, 170, 60},
+                                                                  {40, 80, 210},
+                                                                  {230, 210, 40},
+                                                                  {180, 50, 180},
+                                                                  {40, 190, 200},
+                                                                  {250, 140, 20},
+                                                                  {235, 235, 235}}};
+const Colour CIRCLE_COLOUR = {40, 80, 210};
+const Colour TORUS_COLOUR = {250, 140, 20};
+const Colour SPHERE_COLOUR = {40, 170, 60};
+
+/** Random numbers from std::mt19937_64 with our own transforms, so that a seed
+ * gives the same numbers with any standard library. */
+class Random {
+public:
+  explicit Random (std::uint64_t seed) : engine_ (seed) {}
+
+  /** Uniform in [0, 1). */
+  double
+  uniform ()
+  {
+    return static_cast<double> (engine_() >> 11) * 0x1.0p-53;
+  }
+
+  /** Uniform in [a, b). */
+  double
+  uniform (double a, double b)
+  {
+    return a + (b - a) * uniform();
+  }
+
+  /** Uniform integer in [0, n). */
+  std::size_t
+  index (std::size_t n)
+  {
+    return std::min (static_cast<std::size_t> (uniform() * static_cast<double> (n)),
+                     n - 1);
+  }
+
+  /** Standard normal (Box-Muller). */
+  double
+  normal ()
+  {
+    const double u = 1.0 - uniform(); // (0, 1]
+    return std::sqrt (-2.0 * std::log (u)) * std::cos (2.0 * PI * uniform());
+  }
+
+  /** Normal of standard deviation sigma, redrawn beyond truncation * sigma. */
+  double
+  truncatedNormal (double sigma, double truncation)
+  {
+    if (sigma == 0.0)
+      return 0.0;
+    for (;;) {
+      const double x = normal();
+      if (std::abs (x) <= truncation)
+        return sigma * x;
+    }
+  }
+
+  /** Isotropic 3D normal of standard deviation sigma per axis, redrawn when its
+   * length exceeds NOISE_TRUNCATION * sigma. */
+  Eigen::Vector3d
+  truncatedNormal3 (double sigma)
+  {
+    if (sigma == 0.0)
+      return Eigen::Vector3d::Zero();
+    for (;;) {
+      const Eigen::Vector3d x (normal(), normal(), normal());
+      if (x.norm() <= NOISE_TRUNCATION)
+        return sigma * x;
+    }
+  }
+
+private:
+  std::mt19937_64 engine_;
+};
+
+/** A point on a surface with its outward unit normal. */
+struct SurfaceSample {
+  Eigen::Vector3d point;
+  Eigen::Vector3d normal;
+};
+
+/** Splits total into counts proportional to weights (largest remainder, ties to the
+ * lower index), so that the counts sum to total exactly. */
+std::vector<std::size_t>
+apportion (const std::vector<double>& weights, std::size_t total)
+{
+  double sum = 0.0;
+  for (const double w : weights)
+    sum += w;
+  std::vector<std::size_t> counts (weights.size());
+  std::vector<std::pair<double, std::size_t>> remainders (weights.size());
+  std::size_t assigned = 0;
+  for (std::size_t i = 0; i < weights.size(); ++i) {
+    const double exact = static_cast<double> (total) * weights[i] / sum;
+    counts[i] = static_cast<std::size_t> (std::floor (exact));
+    assigned += counts[i];
+    remainders[i] = {exact - static_cast<double> (counts[i]), i};
+  }
+  std::stable_sort (remainders.begin(),
+                    remainders.end(),
+                    [] (const auto& a, const auto& b) { return a.first > b.first; });
+  for (std::size_t i = 0; assigned < total; ++i, ++assigned)
+    ++counts[remainders[i % remainders.size()].second];
+  return counts;
+}
+
+/** Number of grid cells of size at most spacing along a length (at least one). */
+std::size_t
+cellCount (double length, double spacing)
+{
+  return std::max<std::size_t> (
+      1, static_cast<std::size_t> (std::ceil (length / spacing)));
+}
+
+/** Exactly count points on a sphere of the given radius centred at the origin,
+ * area-uniform: rings of equal polar width get points in proportion to their area,
+ * each point drawn uniformly in its own cell of the ring. */
+std::vector<SurfaceSample>
+sampleSphere (double radius, std::size_t count, Random& random)
+{
+  const std::size_t rows = std::max<std::size_t> (
+      1, static_cast<std::size_t> (std::lround (std::sqrt (PI * count / 4.0))));
+  std::vector<double> weights (rows);
+  for (std::size_t j = 0; j < rows; ++j)
+    weights[j] = std::cos (PI * j / rows) - std::cos (PI * (j + 1) / rows);
+  const std::vector<std::size_t> per_row = apportion (weights, count);
+  std::vector<SurfaceSample> samples;
+  samples.reserve (count);
+  for (std::size_t j = 0; j < rows; ++j) {
+    const double z_top = std::cos (PI * j / rows);
+    const double z_bottom = std::cos (PI * (j + 1) / rows);
+    for (std::size_t k = 0; k < per_row[j]; ++k) {
+      const double z = random.uniform (z_bottom, z_top); // area-uniform in the ring
+      const double theta = 2.0 * PI * (k + random.uniform()) / per_row[j];
+      const double rho = std::sqrt (std::max (0.0, 1.0 - z * z));
+      const Eigen::Vector3d n (rho * std::cos (theta), rho * std::sin (theta), z);
+      samples.push_back ({radius * n, n});
+    }
+  }
+  return samples;
+}
+
+/** Points on the disc of the given radius in the plane z = 0 (normal +z), one per
+ * cell of about spacing x spacing: rings of equal width, cells of equal area. */
+std::vector<SurfaceSample>
+sampleDisc (double radius, double spacing, Random& random)
+{
+  const std::size_t rings = cellCount (radius, spacing);
+  std::vector<SurfaceSample> samples;
+  for (std::size_t j = 0; j < rings; ++j) {
+    const double inner = radius * j / rings;
+    const double outer = radius * (j + 1) / rings;
+    const std::size_t cells =
+        cellCount (PI * (outer * outer - inner * inner), spacing * spacing);
+    for (std::size_t k = 0; k < cells; ++k) {
+      const double rho = std::sqrt (random.uniform (inner * inner, outer * outer));
+      const double theta = 2.0 * PI * (k + random.uniform()) / cells;
+      samples.push_back (
+          {Eigen::Vector3d (rho * std::cos (theta), rho * std::sin (theta), 0.0),
+           Eigen::Vector3d::UnitZ()});
+    }
+  }
+  return samples;
+}
+
+/** Points on the rectangle origin + s * u + t * v, s, t in [0, 1], one per cell of
+ * a grid of cells of at most spacing x spacing. */
+void
+sampleRectangle (const Eigen::Vector3d& origin,
+                 const Eigen::Vector3d& u,
+                 const Eigen::Vector3d& v,
+                 const Eigen::Vector3d& normal,
+                 double spacing,
+                 Random& random,
+                 std::vector<SurfaceSample>& samples)
+{
+  const std::size_t nu = cellCount (u.norm(), spacing);
+  const std::size_t nv = cellCount (v.norm(), spacing);
+  for (std::size_t i = 0; i < nu; ++i)
+    for (std::size_t j = 0; j < nv; ++j) {
+      const double s = (i + random.uniform()) / nu;
+      const double t = (j + random.uniform()) / nv;
+      samples.push_back ({origin + s * u + t * v, normal});
+    }
+}
+
+void
+checkShapeArguments (std::size_t num_points, float noise_sigma, const char* name)
+{
+  if (num_points == 0)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": the number of points must be positive");
+  if (!std::isfinite (noise_sigma) || noise_sigma < 0.0f)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": noise sigma must be finite and >= 0, not "
+                              << noise_sigma);
+}
+
+void
+checkLength (float value, const char* name, const char* what)
+{
+  if (!std::isfinite (value) || value <= 0.0f)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": " << what << " must be finite and > 0, not "
+                              << value);
+}
+
+/** The suggested Vietoris-Rips radius for cell size h and noise sigma; throws when
+ * it exceeds the largest radius at which the shape's holes certainly survive. */
+float
+suggestedRadius (double h, double sigma, double limit, const char* name)
+{
+  const double radius = RADIUS_PER_SPACING * h + RADIUS_PER_SIGMA * sigma;
+  if (radius > limit)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": too few points or too much noise for the shape "
+                                 "(the Vietoris-Rips radius needed, "
+                              << radius << ", exceeds " << limit
+                              << "); add points or lower the noise");
+  return static_cast<float> (radius);
+}
+
+/** Moves the samples by truncated Gaussian noise and stores them as one shape. */
+SyntheticShape
+makeShape (const std::vector<Eigen::Vector3d>& points,
+           double sigma,
+           Random& random,
+           const Colour& colour,
+           int beta0,
+           int beta1,
+           float suggested_radius)
+{
+  SyntheticShape shape;
+  shape.cloud.reset (new pcl::PointCloud<pcl::PointXYZRGBL>);
+  shape.cloud->reserve (points.size());
+  for (const Eigen::Vector3d& p : points) {
+    const Eigen::Vector3d q = p + random.truncatedNormal3 (sigma);
+    pcl::PointXYZRGBL point;
+    point.x = static_cast<float> (q.x());
+    point.y = static_cast<float> (q.y());
+    point.z = static_cast<float> (q.z());
+    point.r = colour[0];
+    point.g = colour[1];
+    point.b = colour[2];
+    point.label = SHAPE_LABEL;
+    shape.cloud->push_back (point);
+  }
+  shape.beta0 = beta0;
+  shape.beta1 = beta1;
+  shape.suggested_radius = suggested_radius;
+  return shape;
+}
+
+} // namespace
+
+SyntheticShape
+generateCircle (const CircleParameters& parameters)
+{
+  const char* name = "generateCircle";
+  checkShapeArguments (parameters.num_points, parameters.noise_sigma, name);
+  checkLength (parameters.radius, name, "radius");
+  const double radius = parameters.radius;
+  const std::size_t n = parameters.num_points;
+  const float suggested = suggestedRadius (
+      2.0 * PI * radius / n, parameters.noise_sigma, radius / 2.0, name);
+
+  Random random (parameters.seed);
+  std::vector<Eigen::Vector3d> points (n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double theta = 2.0 * PI * (i + random.uniform()) / n;
+    points[i] =
+        Eigen::Vector3d (radius * std::cos (theta), radius * std::sin (theta), 0.0);
+  }
+  return makeShape (
+      points, parameters.noise_sigma, random, CIRCLE_COLOUR, 1, 1, suggested);
+}
+
+SyntheticShape
+generateTorus (const TorusParameters& parameters)
+{
+  const char* name = "generateTorus";
+  checkShapeArguments (parameters.num_points, parameters.noise_sigma, name);
+  checkLength (parameters.major_radius, name, "major radius");
+  checkLength (parameters.minor_radius, name, "minor radius");
+  if (parameters.minor_radius >= parameters.major_radius)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": the minor radius (" << parameters.minor_radius
+                              << ") must be below the major radius ("
+                              << parameters.major_radius << ")");
+  const double big = parameters.major_radius;
+  const double small = parameters.minor_radius;
+  const std::size_t n = parameters.num_points;
+  const double h = std::sqrt (4.0 * PI * PI * big * small / n);
+  const float suggested =
+      suggestedRadius (h, parameters.noise_sigma, std::min (small, big - small), name);
+
+  // Rings of equal width around the tube, points in proportion to ring area.
+  const std::size_t rows = std::max<std::size_t> (
+      3, static_cast<std::size_t> (std::lround (2.0 * PI * small / h)));
+  std::vector<double> weights (rows);
+  for (std::size_t j = 0; j < rows; ++j) {
+    const double phi0 = 2.0 * PI * j / rows;
+    const double phi1 = 2.0 * PI * (j + 1) / rows;
+    weights[j] = big * (phi1 - phi0) + small * (std::sin (phi1) - std::sin (phi0));
+  }
+  const std::vector<std::size_t> per_row = apportion (weights, n);
+
+  Random random (parameters.seed);
+  std::vector<Eigen::Vector3d> points;
+  points.reserve (n);
+  for (std::size_t j = 0; j < rows; ++j)
+    for (std::size_t k = 0; k < per_row[j]; ++k) {
+      const double phi = 2.0 * PI * (j + random.uniform()) / rows;
+      const double theta = 2.0 * PI * (k + random.uniform()) / per_row[j];
+      const double rho = big + small * std::cos (phi);
+      points.emplace_back (
+          rho * std::cos (theta), rho * std::sin (theta), small * std::sin (phi));
+    }
+  return makeShape (
+      points, parameters.noise_sigma, random, TORUS_COLOUR, 1, 2, suggested);
+}
+
+SyntheticShape
+generateSphere (const SphereParameters& parameters)
+{
+  const char* name = "generateSphere";
+  checkShapeArguments (parameters.num_points, parameters.noise_sigma, name);
+  checkLength (parameters.radius, name, "radius");
+  const double radius = parameters.radius;
+  const std::size_t n = parameters.num_points;
+  const double h = std::sqrt (4.0 * PI * radius * radius / n);
+  const float suggested =
+      suggestedRadius (h, parameters.noise_sigma, radius / 2.0, name);
+
+  Random random (parameters.seed);
+  std::vector<Eigen::Vector3d> points;
+  points.reserve (n);
+  for (const SurfaceSample& sample : sampleSphere (radius, n, random))
+    points.push_back (sample.point);
+  return makeShape (
+      points, parameters.noise_sigma, random, SPHERE_COLOUR, 1, 0, suggested);
+}
+
+namespace {
+
+/** Narrows [t0, t1] to the parameters t at which p + t * d lies strictly inside the
+ * slab |x| < half; false when nothing is left. */
+bool
+clipToSlab (double p, double d, double half, double& t0, double& t1)
+{
+  if (std::abs (d) < 1e-12)
+    return std::abs (p) < half;
+  double t_near = (-half - p) / d;
+  double t_far = (half - p) / d;
+  if (t_near > t_far)
+    std::swap (t_near, t_far);
+  t0 = std::max (t0, t_near);
+  t1 = std::min (t1, t_far);
+  return t0 < t1;
+}
+
+/** A primitive resting on the table: geometry, sampling and ray tests. */
+struct Primitive {
+  PrimitiveType type;
+  Eigen::Vector3d centre;
+  /** Half side lengths of the bounding box in the primitive's own frame. */
+  Eigen::Vector3d half;
+  double yaw;
+
+  /** Rotation from the primitive's frame to the world frame. */
+  Eigen::Matrix3d
+  rotation () const
+  {
+    return Eigen::AngleAxisd (yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  }
+
+  /** Radius of a disc about the centre that holds the footprint. */
+  double
+  footprintRadius () const
+  {
+    return type == PrimitiveType::BOX ? std::hypot (half.x(), half.y()) : half.x();
+  }
+
+  /** Whether the table point (x, y, 0) lies under the primitive (spheres touch the
+   * table in a single point and cover nothing). */
+  bool
+  covers (const Eigen::Vector3d& p) const
+  {
+    const Eigen::Vector3d local = rotation().transpose() * (p - centre);
+    switch (type) {
+    case PrimitiveType::BOX:
+      return std::abs (local.x()) <= half.x() && std::abs (local.y()) <= half.y();
+    case PrimitiveType::CYLINDER:
+      return local.head<2>().norm() <= half.x();
+    case PrimitiveType::SPHERE:
+      break;
+    }
+    return false;
+  }
+
+  /** Whether the segment from a to b passes through the interior. */
+  bool
+  intersects (const Eigen::Vector3d& a, const Eigen::Vector3d& b) const
+  {
+    const Eigen::Matrix3d to_local = rotation().transpose();
+    const Eigen::Vector3d p = to_local * (a - centre);
+    const Eigen::Vector3d d = to_local * (b - a);
+    switch (type) {
+    case PrimitiveType::BOX: {
+      double t0 = 0.0, t1 = 1.0;
+      for (int k = 0; k < 3; ++k)
+        if (!clipToSlab (p[k], d[k], half[k], t0, t1))
+          return false;
+      return true;
+    }
+    case PrimitiveType::CYLINDER: {
+      double t0 = 0.0, t1 = 1.0;
+      if (!clipToSlab (p.z(), d.z(), half.z(), t0, t1))
+        return false;
+      const double dd = d.head<2>().squaredNorm();
+      const double t =
+          dd < 1e-24 ? t0 : std::clamp (-p.head<2>().dot (d.head<2>()) / dd, t0, t1);
+      return (p.head<2>() + t * d.head<2>()).squaredNorm() < half.x() * half.x();
+    }
+    case PrimitiveType::SPHERE: {
+      const double t = std::clamp (-p.dot (d) / d.squaredNorm(), 0.0, 1.0);
+      return (p + t * d).squaredNorm() < half.x() * half.x();
+    }
+    }
+    return false;
+  }
+
+  /** One point per cell of about spacing x spacing on every surface except a
+   * bottom resting on the table, with outward normals, in world coordinates. */
+  std::vector<SurfaceSample>
+  sample (double spacing, Random& random) const
+  {
+    std::vector<SurfaceSample> local;
+    switch (type) {
+    case PrimitiveType::BOX: {
+      const Eigen::Vector3d x = Eigen::Vector3d::UnitX(), y = Eigen::Vector3d::UnitY(),
+                            z = Eigen::Vector3d::UnitZ();
+      const Eigen::Vector3d sx = 2.0 * half.x() * x, sy = 2.0 * half.y() * y,
+                            sz = 2.0 * half.z() * z;
+      const Eigen::Vector3d corner = -half;
+      sampleRectangle (corner + sz, sx, sy, z, spacing, random, local);
+      sampleRectangle (corner, sx, sz, -y, spacing, random, local);
+      sampleRectangle (corner + sy, sx, sz, y, spacing, random, local);
+      sampleRectangle (corner, sy, sz, -x, spacing, random, local);
+      sampleRectangle (corner + sx, sy, sz, x, spacing, random, local);
+      break;
+    }
+    case PrimitiveType::CYLINDER: {
+      const double radius = half.x();
+      const std::size_t around =
+          std::max<std::size_t> (3, cellCount (2.0 * PI * radius, spacing));
+      const std::size_t along = cellCount (2.0 * half.z(), spacing);
+      for (std::size_t i = 0; i < around; ++i)
+        for (std::size_t j = 0; j < along; ++j) {
+          const double theta = 2.0 * PI * (i + random.uniform()) / around;
+          const double z = half.z() * (2.0 * (j + random.uniform()) / along - 1.0);
+          const Eigen::Vector3d n (std::cos (theta), std::sin (theta), 0.0);
+          local.push_back ({radius * n + z * Eigen::Vector3d::UnitZ(), n});
+        }
+      for (SurfaceSample& s : sampleDisc (radius, spacing, random)) {
+        s.point.z() = half.z();
+        local.push_back (s);
+      }
+      break;
+    }
+    case PrimitiveType::SPHERE: {
+      const double radius = half.x();
+      const double area = 4.0 * PI * radius * radius;
+      local = sampleSphere (radius, cellCount (area, spacing * spacing), random);
+      break;
+    }
+    }
+    const Eigen::Matrix3d to_world = rotation();
+    for (SurfaceSample& s : local) {
+      s.point = to_world * s.point + centre;
+      s.normal = to_world * s.normal;
+    }
+    return local;
+  }
+};
+
+/** Draws the type, size and yaw of an object (position left at the origin). */
+Primitive
+drawPrimitive (Random& random)
+{
+  Primitive primitive;
+  primitive.type = static_cast<PrimitiveType> (random.index (3));
+  primitive.yaw = 0.0;
+  switch (primitive.type) {
+  case PrimitiveType::BOX:
+    primitive.half =
+        0.5 * Eigen::Vector3d (random.uniform (BOX_MIN_SIDE, BOX_MAX_SIDE),
+                               random.uniform (BOX_MIN_SIDE, BOX_MAX_SIDE),
+                               random.uniform (BOX_MIN_HEIGHT, BOX_MAX_HEIGHT));
+    primitive.yaw = random.uniform (0.0, PI);
+    break;
+  case PrimitiveType::CYLINDER: {
+    const double radius = random.uniform (CYLINDER_MIN_RADIUS, CYLINDER_MAX_RADIUS);
+    const double height = random.uniform (CYLINDER_MIN_HEIGHT, CYLINDER_MAX_HEIGHT);
+    primitive.half = Eigen::Vector3d (radius, radius, 0.5 * height);
+    break;
+  }
+  case PrimitiveType::SPHERE: {
+    const double radius = random.uniform (SPHERE_MIN_RADIUS, SPHERE_MAX_RADIUS);
+    primitive.half = Eigen::Vector3d::Constant (radius);
+    break;
+  }
+  }
+  primitive.centre = Eigen::Vector3d::Zero();
+  return primitive;
+}
+
+/** Places count objects inside the table, their footprint discs at least
+ * separation apart; false when the random draws do not fit. */
+bool
+placeObjects (std::size_t count,
+              double half_width,
+              double half_depth,
+              double separation,
+              Random& random,
+              std::vector<Primitive>& objects)
+{
+  objects.clear();
+  for (std::size_t k = 0; k < count; ++k) {
+    bool placed = false;
+    for (int attempt = 0; attempt < MAX_PLACEMENT_ATTEMPTS && !placed; ++attempt) {
+      Primitive candidate = drawPrimitive (random);
+      const double reach = candidate.footprintRadius() + TABLE_MARGIN;
+      if (reach >= half_width || reach >= half_depth)
+        continue;
+      candidate.centre =
+          Eigen::Vector3d (random.uniform (-half_width + reach, half_width - reach),
+                           random.uniform (-half_depth + reach, half_depth - reach),
+                           candidate.half.z());
+      placed =
+          std::all_of (objects.begin(), objects.end(), [&] (const Primitive& other) {
+            const double distance = (candidate.centre - other.centre).head<2>().norm();
+            return distance >=
+                   candidate.footprintRadius() + other.footprintRadius() + separation;
+          });
+      if (placed)
+        objects.push_back (candidate);
+    }
+    if (!placed)
+      return false;
+  }
+  return true;
+}
+
+/** Keeps the samples a camera sees: those facing it and not behind another object.
+ * samples[0] is the table, samples[k + 1] object k. Returns false when some object
+ * hides part of another (objects may hide only the table). */
+bool
+keepVisible (const Eigen::Vector3d& camera,
+             const std::vector<Primitive>& objects,
+             std::vector<std::vector<SurfaceSample>>& samples)
+{
+  for (std::size_t part = 0; part < samples.size(); ++part) {
+    const std::size_t self = part == 0 ? objects.size() : part - 1;
+    std::vector<SurfaceSample> visible;
+    for (const SurfaceSample& s : samples[part]) {
+      if (s.normal.dot (camera - s.point) <= 0.0)
+        continue;
+      bool hidden = false;
+      for (std::size_t j = 0; j < objects.size() && !hidden; ++j)
+        hidden = j != self && objects[j].intersects (s.point, camera);
+      if (!hidden)
+        visible.push_back (s);
+      else if (part > 0)
+        return false;
+    }
+    samples[part].swap (visible);
+  }
+  return true;
+}
+
+void
+checkTabletopParameters (const TabletopParameters& parameters)
+{
+  const char* name = "generateTabletopScene";
+  if (parameters.num_objects > MAX_TABLETOP_OBJECTS)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": at most " << MAX_TABLETOP_OBJECTS
+                              << " objects, not " << parameters.num_objects);
+  checkLength (parameters.table_width, name, "table width");
+  checkLength (parameters.table_depth, name, "table depth");
+  checkLength (parameters.point_spacing, name, "point spacing");
+  checkLength (parameters.min_gap, name, "minimum gap");
+  if (parameters.point_spacing > MAX_POINT_SPACING)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": point spacing must be at most " << MAX_POINT_SPACING
+                              << " m, not " << parameters.point_spacing);
+  const double table_samples =
+      static_cast<double> (parameters.table_width) * parameters.table_depth /
+      (static_cast<double> (parameters.point_spacing) * parameters.point_spacing);
+  if (table_samples > MAX_TABLE_SAMPLES)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": point spacing " << parameters.point_spacing
+                              << " m gives " << table_samples
+                              << " table points, more than " << MAX_TABLE_SAMPLES);
+  if (!std::isfinite (parameters.noise_sigma) || parameters.noise_sigma < 0.0f)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": noise sigma must be finite and >= 0, not "
+                              << parameters.noise_sigma);
+  if (!std::isfinite (parameters.colour_noise) || parameters.colour_noise < 0.0f)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": colour noise must be finite and >= 0, not "
+                              << parameters.colour_noise);
+  if (!(parameters.dropout >= 0.0f && parameters.dropout < 1.0f))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": dropout must be in [0, 1), not "
+                              << parameters.dropout);
+  if (!parameters.camera_position.allFinite() ||
+      parameters.camera_position.z() <= MAX_OBJECT_HEIGHT)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         name << ": the camera must be above the objects (z > "
+                              << MAX_OBJECT_HEIGHT
+                              << " m), not at z = " << parameters.camera_position.z());
+}
+
+std::uint8_t
+noisyChannel (std::uint8_t value, double sigma, Random& random)
+{
+  const double noisy = value + random.truncatedNormal (sigma, COLOUR_NOISE_TRUNCATION);
+  return static_cast<std::uint8_t> (std::clamp (std::lround (noisy), 0L, 255L));
+}
+
+} // namespace
+
+TabletopScene
+generateTabletopScene (const TabletopParameters& parameters)
+{
+  checkTabletopParameters (parameters);
+  Random random (parameters.seed);
+  const double half_width = 0.5 * parameters.table_width;
+  const double half_depth = 0.5 * parameters.table_depth;
+  const double spacing = parameters.point_spacing;
+  const Eigen::Vector3d camera = parameters.camera_position.cast<double>();
+
+  // Bound on the depth noise: the farthest point of the scene from the camera.
+  double farthest = 0.0;
+  for (const double x : {-half_width, half_width})
+    for (const double y : {-half_depth, half_depth})
+      for (const double z : {0.0, MAX_OBJECT_HEIGHT})
+        farthest = std::max (farthest, (Eigen::Vector3d (x, y, z) - camera).norm());
+  const double max_displacement =
+      NOISE_TRUNCATION * parameters.noise_sigma * farthest * farthest;
+  const double separation = parameters.min_gap + 2.0 * max_displacement;
+
+  std::array<Colour, MAX_TABLETOP_OBJECTS> palette = OBJECT_PALETTE;
+  for (std::size_t i = palette.size() - 1; i > 0; --i)
+    std::swap (palette[i], palette[random.index (i + 1)]);
+
+  // Lay out the objects until none hides any part of another.
+  std::vector<Primitive> objects;
+  std::vector<std::vector<SurfaceSample>> samples; // [0] table, [k + 1] object k
+  bool accepted = false;
+  for (int layout = 0; layout < MAX_LAYOUT_ATTEMPTS && !accepted; ++layout) {
+    if (!placeObjects (parameters.num_objects,
+                       half_width,
+                       half_depth,
+                       separation,
+                       random,
+                       objects))
+      continue;
+    samples.assign (1, {});
+    sampleRectangle (Eigen::Vector3d (-half_width, -half_depth, 0.0),
+                     Eigen::Vector3d (parameters.table_width, 0.0, 0.0),
+                     Eigen::Vector3d (0.0, parameters.table_depth, 0.0),
+                     Eigen::Vector3d::UnitZ(),
+                     spacing,
+                     random,
+                     samples[0]);
+    samples[0].erase (std::remove_if (samples[0].begin(),
+                                      samples[0].end(),
+                                      [&] (const SurfaceSample& s) {
+                                        return std::any_of (objects.begin(),
+                                                            objects.end(),
+                                                            [&] (const Primitive& o) {
+                                                              return o.covers (s.point);
+                                                            });
+                                      }),
+                      samples[0].end());
+    for (const Primitive& object : objects)
+      samples.push_back (object.sample (spacing, random));
+    accepted = !parameters.visible_only || keepVisible (camera, objects, samples);
+  }
+  if (!accepted)
+    PCL_THROW_EXCEPTION (
+        pcl::BadArgumentException,
+        "generateTabletopScene: cannot lay out "
+            << parameters.num_objects << " objects on a " << parameters.table_width
+            << " x " << parameters.table_depth << " m table with gaps of " << separation
+            << " m (min gap plus noise) and none hiding another; use fewer objects, a "
+               "larger table or less noise");
+
+  TabletopScene scene;
+  scene.cloud.reset (new pcl::PointCloud<pcl::PointXYZRGBL>);
+  scene.cloud->sensor_origin_ = Eigen::Vector4f (parameters.camera_position.x(),
+                                                 parameters.camera_position.y(),
+                                                 parameters.camera_position.z(),
+                                                 0.0f);
+  scene.table_r = TABLE_COLOUR[0];
+  scene.table_g = TABLE_COLOUR[1];
+  scene.table_b = TABLE_COLOUR[2];
+  scene.max_noise_displacement = static_cast<float> (max_displacement);
+  for (std::size_t part = 0; part < samples.size(); ++part) {
+    const Colour& colour = part == 0 ? TABLE_COLOUR : palette[part - 1];
+    const std::uint32_t label =
+        part == 0 ? TABLE_LABEL
+                  : FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (part - 1);
+    std::size_t kept = 0;
+    for (const SurfaceSample& s : samples[part]) {
+      if (random.uniform() < parameters.dropout)
+        continue;
+      const Eigen::Vector3d ray = s.point - camera;
+      const double distance = ray.norm();
+      const double sigma = parameters.noise_sigma * distance * distance;
+      const Eigen::Vector3d q =
+          s.point + random.truncatedNormal (sigma, NOISE_TRUNCATION) * ray / distance;
+      pcl::PointXYZRGBL point;
+      point.x = static_cast<float> (q.x());
+      point.y = static_cast<float> (q.y());
+      point.z = static_cast<float> (q.z());
+      point.r = noisyChannel (colour[0], parameters.colour_noise, random);
+      point.g = noisyChannel (colour[1], parameters.colour_noise, random);
+      point.b = noisyChannel (colour[2], parameters.colour_noise, random);
+      point.label = label;
+      scene.cloud->push_back (point);
+      ++kept;
+    }
+    if (part == 0) {
+      scene.num_table_points = kept;
+      continue;
+    }
+    const Primitive& object = objects[part - 1];
+    TabletopObject truth;
+    truth.type = object.type;
+    truth.label = label;
+    truth.centre = object.centre.cast<float>();
+    truth.dimensions = (2.0 * object.half).cast<float>();
+    truth.yaw = static_cast<float> (object.yaw);
+    truth.r = colour[0];
+    truth.g = colour[1];
+    truth.b = colour[2];
+    truth.num_points = kept;
+    scene.objects.push_back (truth);
+  }
+  return scene;
+}
+
+} // namespace tda
+} // namespace pcl

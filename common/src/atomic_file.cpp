@@ -13,30 +13,24 @@ namespace pcl {
 namespace tda {
 
 void
-writeFileAtomically (const std::string& path,
-                     const std::function<void (std::ostream&)>& writer,
-                     bool binary)
+replaceFileAtomically (
+    const std::string& path,
+    const std::function<bool (const std::string& temporary)>& write_file)
 {
   const std::string temporary = path + ".tmp." + std::to_string (::getpid());
-  {
-    std::ofstream out (temporary, binary ? std::ios::binary : std::ios::out);
-    if (!out)
-      PCL_THROW_EXCEPTION (pcl::IOException,
-                           "cannot write " << path << ": " << std::strerror (errno));
-    try {
-      writer (out);
-    }
-    catch (...) {
-      out.close();
-      std::remove (temporary.c_str());
-      throw;
-    }
-    out.flush();
-    if (!out) {
-      out.close();
-      std::remove (temporary.c_str());
-      PCL_THROW_EXCEPTION (pcl::IOException, "writing " << path << " failed");
-    }
+  bool written = false;
+  try {
+    written = write_file (temporary);
+  }
+  catch (...) {
+    std::remove (temporary.c_str());
+    throw;
+  }
+  if (!written) {
+    const int error = errno;
+    std::remove (temporary.c_str());
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         "cannot write " << path << ": " << std::strerror (error));
   }
   if (std::rename (temporary.c_str(), path.c_str()) != 0) {
     const int error = errno;
@@ -44,6 +38,21 @@ writeFileAtomically (const std::string& path,
     PCL_THROW_EXCEPTION (pcl::IOException,
                          "cannot replace " << path << ": " << std::strerror (error));
   }
+}
+
+void
+writeFileAtomically (const std::string& path,
+                     const std::function<void (std::ostream&)>& writer,
+                     bool binary)
+{
+  replaceFileAtomically (path, [&] (const std::string& temporary) {
+    std::ofstream out (temporary, binary ? std::ios::binary : std::ios::out);
+    if (!out)
+      return false;
+    writer (out);
+    out.flush();
+    return static_cast<bool> (out);
+  });
 }
 
 bool

@@ -61,11 +61,41 @@ nonZeroIntervals (const PersistenceDiagram& diagram,
   return kept;
 }
 
+/** Indices of the intervals of \a second[0, \a second_size) (sorted by value) that
+ * match \a interval in birth and death. */
+template <typename Visit>
+void
+forEachMatchingInterval (const PersistenceInterval& interval,
+                         const PersistenceInterval* second,
+                         std::size_t second_size,
+                         double relative_tolerance,
+                         Visit visit)
+{
+  const double reach =
+      std::abs (interval.birth) * relative_tolerance / (1.0 - relative_tolerance) +
+      ABSOLUTE_TOLERANCE;
+  const auto begin = std::lower_bound (
+      second,
+      second + second_size,
+      interval.birth - reach,
+      [] (const PersistenceInterval& x, double birth) { return x.birth < birth; });
+  for (auto candidate = begin;
+       candidate != second + second_size && candidate->birth <= interval.birth + reach;
+       ++candidate)
+    if (valuesMatch (interval.birth, candidate->birth, relative_tolerance) &&
+        valuesMatch (interval.death, candidate->death, relative_tolerance))
+      if (!visit (static_cast<std::size_t> (candidate - second)))
+        return;
+}
+
 /** Matches the intervals \a first[0, \a first_size) to \a second[0, \a
  * second_size), all of one dimension and sorted by value, and records the result.
  *
  * A window slides over \a second: it holds, keyed by death, the unmatched intervals
- * whose birth matches the birth of the current interval of \a first. */
+ * whose birth matches the birth of the current interval of \a first, and each
+ * interval takes the one of closest death. Augmenting paths then make the matching
+ * maximum, so values crowded closer than the tolerance never leave an interval
+ * unmatched that a different pairing would match. */
 void
 matchDimension (const PersistenceInterval* first,
                 std::size_t first_size,
@@ -74,8 +104,10 @@ matchDimension (const PersistenceInterval* first,
                 double relative_tolerance,
                 DiagramComparison& result)
 {
+  constexpr std::size_t NONE = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> mate_of_first (first_size, NONE);
+  std::vector<std::size_t> mate_of_second (second_size, NONE);
   std::set<std::pair<double, std::size_t>> window;
-  std::vector<bool> matched (second_size, false);
   std::size_t window_begin = 0, window_end = 0;
   for (std::size_t i = 0; i < first_size; ++i) {
     const double birth = first[i].birth;
@@ -106,16 +138,54 @@ matchDimension (const PersistenceInterval* first,
         best_distance = distance;
       }
     }
-    if (best == window.end()) {
-      result.only_in_first.push_back (first[i]);
-      continue;
+    if (best != window.end()) {
+      mate_of_first[i] = best->second;
+      mate_of_second[best->second] = i;
+      window.erase (best);
     }
-    matched[best->second] = true;
-    window.erase (best);
-    ++result.matched;
   }
+
+  // Augmenting paths (breadth first) from every interval of first left unmatched.
+  std::vector<std::size_t> parent_of_second (second_size);
+  std::vector<bool> visited (second_size);
+  for (std::size_t start = 0; start < first_size; ++start) {
+    if (mate_of_first[start] != NONE)
+      continue;
+    std::fill (visited.begin(), visited.end(), false);
+    std::vector<std::size_t> queue{start};
+    std::size_t free_end = NONE;
+    for (std::size_t q = 0; q < queue.size() && free_end == NONE; ++q) {
+      const std::size_t i = queue[q];
+      forEachMatchingInterval (
+          first[i], second, second_size, relative_tolerance, [&] (std::size_t j) {
+            if (visited[j])
+              return true;
+            visited[j] = true;
+            parent_of_second[j] = i;
+            if (mate_of_second[j] == NONE) {
+              free_end = j;
+              return false;
+            }
+            queue.push_back (mate_of_second[j]);
+            return true;
+          });
+    }
+    for (std::size_t j = free_end; j != NONE;) {
+      const std::size_t i = parent_of_second[j];
+      const std::size_t previous = mate_of_first[i];
+      mate_of_first[i] = j;
+      mate_of_second[j] = i;
+      j = previous;
+    }
+  }
+
+  for (std::size_t i = 0; i < first_size; ++i)
+    if (mate_of_first[i] == NONE)
+      result.only_in_first.push_back (first[i]);
+    else
+      ++result.matched;
   for (std::size_t j = 0; j < second_size; ++j)
-    if (!matched[j])
+    if (mate_of_second[j] == NONE)
       result.only_in_second.push_back (second[j]);
 }
 

@@ -136,13 +136,14 @@ FilteredComplex::fromLists (std::size_t num_vertices,
          {vertices[0], vertices[2]},
          {vertices[1], vertices[2]}}};
     for (std::size_t side = 0; side < 3; ++side) {
-      const auto found = edge_ids.find (edgeKey (sides[side].first, sides[side].second));
+      const auto found =
+          edge_ids.find (edgeKey (sides[side].first, sides[side].second));
       if (found == edge_ids.end())
         PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                              "triangle (" << vertices[0] << ", " << vertices[1] << ", "
                                           << vertices[2] << ") lacks edge ("
-                                          << sides[side].first << ", " << sides[side].second
-                                          << ")");
+                                          << sides[side].first << ", "
+                                          << sides[side].second << ")");
       triangle.edges[side] = found->second;
     }
     std::sort (triangle.edges.begin(), triangle.edges.end(), std::greater<>());

@@ -22,6 +22,8 @@ ProgressBar::update (std::size_t done)
   const int percent = total_ == 0 ? 100 : static_cast<int> (100.0 * done / total_);
   if (percent == shown_percent_)
     return;
+  if (shown_percent_ < 0)
+    std::fputc ('\n', stream_); // start below whatever the line holds
   shown_percent_ = percent;
   constexpr int WIDTH = 40;
   const int filled = percent * WIDTH / 100;

@@ -228,6 +228,19 @@ TEST (DiagramComparison, DenseDeathsWithinToleranceAllMatch)
   EXPECT_EQ (2000u, result.matched);
 }
 
+// Seen on rops_cloud.pcd against Ripser: taking the closest death first would pair
+// 1.0 with 1.000004 and leave 1.0000135 without a partner; the maximum matching
+// pairs 1.0 with 0.999991 instead.
+TEST (DiagramComparison, ClosestFirstChoiceIsRepairedToAMaximumMatching)
+{
+  const PersistenceDiagram ours{{0, 0.0, 1.0}, {0, 0.0, 1.0000135}};
+  const PersistenceDiagram theirs{{0, 0.0, 0.999991}, {0, 0.0, 1.000004}};
+  const auto result = compareDiagrams (ours, theirs, 1e-5);
+  EXPECT_TRUE (result.equal) << result.summary();
+  EXPECT_EQ (result.matched, 2u);
+  EXPECT_FALSE (compareDiagrams (ours, {{0, 0.0, 0.999991}, {0, 0.0, 0.999992}}).equal);
+}
+
 TEST (DiagramComparison, HundredThousandIntervalsCompareQuickly)
 {
   // All H0 births equal and H1 births within tolerance of each other: a matching

@@ -1,0 +1,43 @@
+#pragma once
+
+#include <pcl/common/io.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/tda/common/atomic_file.h>
+#include <pcl/PCLPointCloud2.h>
+#include <pcl/point_cloud.h>
+
+#include <string>
+
+namespace pcl {
+namespace tda {
+
+/** \brief Reads a PCD file for a tool, checking its header first (PCL's reader
+ * can crash on a malformed file) and that it has the fields x, y and z.
+ * \throws pcl::IOException saying what is wrong with the file */
+void
+loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud);
+
+/** \brief loadPointCloudFile() converted to points of type \a PointT. */
+template <typename PointT>
+void
+loadPointCloudFile (const std::string& path, pcl::PointCloud<PointT>& cloud)
+{
+  pcl::PCLPointCloud2 blob;
+  loadPointCloudFile (path, blob);
+  pcl::fromPCLPointCloud2 (blob, cloud);
+}
+
+/** \brief Saves a cloud as a binary PCD file, atomically: \a path never holds a
+ * partial file.
+ * \throws pcl::IOException when the file cannot be written */
+template <typename PointT>
+void
+savePointCloudFile (const std::string& path, const pcl::PointCloud<PointT>& cloud)
+{
+  replaceFileAtomically (path, [&cloud] (const std::string& temporary) {
+    return pcl::io::savePCDFileBinary (temporary, cloud) >= 0;
+  });
+}
+
+} // namespace tda
+} // namespace pcl

@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Installs the Debian packages PCL-TDA needs that are missing, and nothing else.
+# Safe to run again: when everything is there it does nothing.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config          # build
+  libpcl-dev libeigen3-dev libboost-dev # libraries
+  libgtest-dev libbenchmark-dev ccache  # tests and build speed
+  ripser libphat-dev                 # reference tools, for tests and benchmarks only
+)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install_deps: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then
+  sudo="sudo"
+fi
+echo "install_deps: installing ${missing[*]}"
+$sudo apt-get update
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y "${missing[@]}"
