@@ -1,8 +1,8 @@
 #include <pcl/tda/common/diagram_comparison.h>
+#include <pcl/tda/common/diagram_io.h>
 #include <pcl/exceptions.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <iterator>
 #include <limits>
@@ -189,16 +189,6 @@ matchDimension (const PersistenceInterval* first,
       result.only_in_second.push_back (second[j]);
 }
 
-std::string
-formatValue (double value)
-{
-  if (value == std::numeric_limits<double>::infinity())
-    return "inf";
-  char buffer[32];
-  const auto result = std::to_chars (buffer, buffer + sizeof (buffer), value);
-  return std::string (buffer, result.ptr);
-}
-
 /** Writes the counts per dimension of \a diagram and its first \a max_listed
  * intervals, under the title \a title. */
 void
@@ -219,8 +209,9 @@ describeUnmatched (std::ostream& out,
   out << (counts.empty() ? "" : ")");
   const std::size_t listed = std::min (max_listed, diagram.size());
   for (std::size_t i = 0; i < listed; ++i)
-    out << "\n  H" << diagram[i].dimension << " [" << formatValue (diagram[i].birth)
-        << ", " << formatValue (diagram[i].death) << ")";
+    out << "\n  H" << diagram[i].dimension << " ["
+        << formatFiltrationValue (diagram[i].birth) << ", "
+        << formatFiltrationValue (diagram[i].death) << ")";
   if (listed < diagram.size())
     out << "\n  ... and " << diagram.size() - listed << " more";
 }

@@ -57,16 +57,6 @@ splitFields (std::string_view line)
   return fields;
 }
 
-std::string
-formatValue (double value)
-{
-  if (value == std::numeric_limits<double>::infinity())
-    return "inf";
-  char buffer[32];
-  const auto result = std::to_chars (buffer, buffer + sizeof (buffer), value);
-  return std::string (buffer, result.ptr);
-}
-
 /** Why (dimension, birth, death) is not a valid interval, or nullptr. */
 const char*
 intervalProblem (int dimension, double birth, double death)
@@ -252,6 +242,16 @@ readDiagramFrom (std::istream& in, const std::string& source)
 
 } // namespace
 
+std::string
+formatFiltrationValue (double value)
+{
+  if (value == std::numeric_limits<double>::infinity())
+    return "inf";
+  char buffer[32];
+  const auto result = std::to_chars (buffer, buffer + sizeof (buffer), value);
+  return std::string (buffer, result.ptr);
+}
+
 void
 writeDiagramCSV (std::ostream& out, const PersistenceDiagram& diagram)
 {
@@ -273,8 +273,8 @@ writeDiagramCSV (std::ostream& out, const PersistenceDiagram& diagram)
              });
   out << CSV_HEADER << '\n';
   for (const auto& interval : sorted)
-    out << interval.dimension << ',' << formatValue (interval.birth) << ','
-        << formatValue (interval.death) << '\n';
+    out << interval.dimension << ',' << formatFiltrationValue (interval.birth) << ','
+        << formatFiltrationValue (interval.death) << '\n';
 }
 
 void

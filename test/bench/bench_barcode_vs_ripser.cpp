@@ -9,6 +9,8 @@
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/point_types.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -16,8 +18,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-
-#include <unistd.h>
 
 namespace {
 

@@ -24,7 +24,10 @@ loadPointCloudFile (const std::string& path, pcl::PointCloud<PointT>& cloud)
 {
   pcl::PCLPointCloud2 blob;
   loadPointCloudFile (path, blob);
-  pcl::fromPCLPointCloud2 (blob, cloud);
+  if (blob.data.empty()) // PCL's conversion reads the first point of any cloud
+    cloud.clear();
+  else
+    pcl::fromPCLPointCloud2 (blob, cloud);
 }
 
 /** \brief Saves a cloud as a binary PCD file, atomically: \a path never holds a

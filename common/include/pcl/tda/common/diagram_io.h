@@ -51,5 +51,10 @@ readDiagram (std::istream& in);
 PersistenceDiagram
 loadDiagram (const std::string& path);
 
+/** \brief The shortest text that reads back as exactly \a value ("inf" for
+ * infinity): how the CSV writer and the diagram comparison print values. */
+std::string
+formatFiltrationValue (double value);
+
 } // namespace tda
 } // namespace pcl

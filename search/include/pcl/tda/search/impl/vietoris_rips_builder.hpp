@@ -127,6 +127,9 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     points[v] = {point.x, point.y, point.z};
   }
 
+  // PCL searches compare squared float distances: widen the radius so that no
+  // point within the exact radius is missed; the exact test comes afterwards.
+  const double search_radius = radius_ * (1.0 + 1e-5);
   CandidateSearch candidates;
   std::unique_ptr<UniformGridSearch> grid;
   std::vector<SimplexIndex> vertex_of_input;
@@ -135,9 +138,6 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     vertex_of_input.assign (input_->size(), INVALID_SIMPLEX);
     for (std::size_t v = 0; v < order.size(); ++v)
       vertex_of_input[order[v]] = static_cast<SimplexIndex> (v);
-    // PCL searches compare squared float distances: widen the radius so that no
-    // point within the exact radius is missed; the exact test comes afterwards.
-    const double search_radius = radius_ * (1.0 + 1e-5);
     candidates = [&] (SimplexIndex vertex, std::vector<SimplexIndex>& out) {
       pcl::Indices found;
       std::vector<float> squared_distances;
