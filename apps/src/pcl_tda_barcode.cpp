@@ -10,9 +10,10 @@
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>
+#include <pcl/tda/common/persistence_engines.h>
 #include <pcl/tda/common/persistence_plots.h>
+#include <pcl/tda/common/phat_io.h>
 #include <pcl/tda/common/progress_bar.h>
-#include <pcl/tda/common/standard_reduction.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/point_types.h>
 
@@ -27,7 +28,8 @@ using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 namespace {
 
 struct Options {
-  std::string input, output, barcode_svg, diagram_svg;
+  std::string input, output, barcode_svg, diagram_svg, phat_matrix;
+  pcl::tda::PersistenceEngine engine = pcl::tda::PersistenceEngine::COHOMOLOGY;
   double radius = 0.0;
   int dimension = 1;
   double leaf = 0.0;
@@ -59,6 +61,13 @@ printHelp (const char* program)
               "(default: 0 = off)\n");
   print_info ("                     -memory M    = refuse complexes over M MiB "
               "(default: half of the memory)\n");
+  print_info ("                     -engine E    = H1 engine: cohomology (default, "
+              "fastest), fip,\n"
+              "                                    incremental or standard\n");
+  print_info (
+      "                     -export-phat F = also write the complex as a PHAT "
+      "boundary matrix\n"
+      "                                    (binary if F ends in .bin, else ASCII)\n");
   print_info ("                     -svg F.svg   = also draw the barcode\n");
   print_info (
       "                     -diagram F.svg = also draw the persistence diagram\n");
@@ -86,6 +95,14 @@ parseOptions (int argc, char** argv, Options& options)
   parse_argument (argc, argv, "-svg", options.barcode_svg);
   parse_argument (argc, argv, "-diagram", options.diagram_svg);
   parse_argument (argc, argv, "-memory", options.memory_mib);
+  parse_argument (argc, argv, "-export-phat", options.phat_matrix);
+  std::string engine_name;
+  if (parse_argument (argc, argv, "-engine", engine_name) >= 0 &&
+      !pcl::tda::parseEngineName (engine_name, options.engine)) {
+    print_error ("Unknown engine %s: use cohomology, fip, incremental or standard.\n",
+                 engine_name.c_str());
+    return false;
+  }
   options.json = find_switch (argc, argv, "-json");
   if (!(options.radius > 0.0) || !std::isfinite (options.radius)) {
     print_error ("The radius must be a positive number, not %g.\n", options.radius);
@@ -104,7 +121,7 @@ parseOptions (int argc, char** argv, Options& options)
     return false;
   }
   for (const std::string& output :
-       {options.output, options.barcode_svg, options.diagram_svg})
+       {options.output, options.barcode_svg, options.diagram_svg, options.phat_matrix})
     if (!output.empty() &&
         (output == options.input || pcl::tda::isSameFile (output, options.input))) {
       print_error ("Refusing to overwrite the input file %s.\n", options.input.c_str());
@@ -171,34 +188,44 @@ run (const Options& options)
 
   timer.tic();
   print_highlight ("Computing H0 ");
-  pcl::tda::PersistenceDiagram diagram =
-      pcl::tda::computeH0Persistence (complex).diagram (0);
-  const std::size_t h0_intervals = diagram.size();
+  pcl::tda::PersistenceResult result = pcl::tda::computeH0Persistence (complex);
+  const std::size_t h0_intervals = result.diagram (0).size();
   seconds.h0 = timer.toc() / 1000.0;
   printDone (timer, std::to_string (h0_intervals) + " intervals");
 
-  std::size_t h1_intervals = 0;
   if (options.dimension == 1) {
     timer.tic();
-    print_highlight ("Computing H1 ");
-    pcl::tda::ProgressBar progress ("  reducing", complex.numSimplices());
-    const pcl::tda::PersistenceResult result = pcl::tda::computeStandardReduction (
-        complex,
-        [&progress] (std::size_t done, std::size_t) { progress.update (done); });
+    print_highlight ("Computing H1 (%s) ",
+                     pcl::tda::engineName (options.engine).c_str());
+    pcl::tda::ProgressBar progress ("  reducing");
+    pcl::tda::addH1Persistence (complex,
+                                options.engine,
+                                result,
+                                [&progress] (std::size_t done, std::size_t total) {
+                                  progress.update (done, total);
+                                });
     progress.finish();
-    for (const auto& interval : result.diagram (1))
-      if (interval.dimension == 1)
-        diagram.push_back (interval);
-    h1_intervals = diagram.size() - h0_intervals;
     seconds.h1 = timer.toc() / 1000.0;
-    printDone (timer, std::to_string (h1_intervals) + " intervals");
   }
+  const pcl::tda::PersistenceDiagram diagram = result.diagram (options.dimension);
+  const std::size_t h1_intervals = diagram.size() - h0_intervals;
+  if (options.dimension == 1)
+    printDone (timer, std::to_string (h1_intervals) + " intervals");
 
   timer.tic();
   print_highlight ("Saving ");
   print_value ("%s ", options.output.c_str());
   try {
     pcl::tda::saveDiagramCSV (options.output, diagram);
+    if (!options.phat_matrix.empty())
+      pcl::tda::savePHATBoundaryMatrix (
+          options.phat_matrix,
+          complex,
+          options.phat_matrix.size() > 4 &&
+                  options.phat_matrix.compare (
+                      options.phat_matrix.size() - 4, 4, ".bin") == 0
+              ? pcl::tda::PHATFormat::BINARY
+              : pcl::tda::PHATFormat::ASCII);
     pcl::tda::PlotOptions plot;
     std::ostringstream title;
     title << options.input << ", radius " << options.radius;
@@ -215,9 +242,10 @@ run (const Options& options)
   }
   seconds.write = timer.toc() / 1000.0;
   printDone (timer, std::to_string (diagram.size()) + " intervals");
-  for (const std::string& picture : {options.barcode_svg, options.diagram_svg})
+  for (const std::string& picture :
+       {options.barcode_svg, options.diagram_svg, options.phat_matrix})
     if (!picture.empty()) {
-      print_info ("Picture: ");
+      print_info ("Written: ");
       print_value ("%s\n", picture.c_str());
     }
 

@@ -5,9 +5,8 @@
 namespace pcl {
 namespace tda {
 
-ProgressBar::ProgressBar (std::string label, std::size_t total, std::FILE* stream)
+ProgressBar::ProgressBar (std::string label, std::FILE* stream)
 : label_ (std::move (label))
-, total_ (total)
 , stream_ (stream)
 , enabled_ (::isatty (::fileno (stream)) != 0)
 {}
@@ -15,11 +14,11 @@ ProgressBar::ProgressBar (std::string label, std::size_t total, std::FILE* strea
 ProgressBar::~ProgressBar() { finish(); }
 
 void
-ProgressBar::update (std::size_t done)
+ProgressBar::update (std::size_t done, std::size_t total)
 {
   if (!enabled_ || finished_)
     return;
-  const int percent = total_ == 0 ? 100 : static_cast<int> (100.0 * done / total_);
+  const int percent = total == 0 ? 100 : static_cast<int> (100.0 * done / total);
   if (percent == shown_percent_)
     return;
   if (shown_percent_ < 0)
@@ -43,7 +42,7 @@ ProgressBar::finish()
 {
   if (!enabled_ || finished_)
     return;
-  update (total_);
+  update (1, 1);
   std::fputc ('\n', stream_);
   finished_ = true;
 }

@@ -60,29 +60,6 @@ bettiNumbersByRanks (const FilteredComplex& complex, std::size_t length)
   return {count[0] - rank1, count[1] - rank1 - rank2, count[2] - rank2};
 }
 
-/** The filter of thesis Fig 5.2: vertices a..e, then edges ab, ae, be, ad, cd, ac,
- * ce, bc (filter positions 5..12) and triangles bce, ace, abc, acd, abe (13..17);
- * each simplex's value is its position. */
-FilteredComplex
-figure52Filter ()
-{
-  enum { a, b, c, d, e };
-  return FilteredComplex (5,
-                          {{a, b, 5},
-                           {a, e, 6},
-                           {b, e, 7},
-                           {a, d, 8},
-                           {c, d, 9},
-                           {a, c, 10},
-                           {c, e, 11},
-                           {b, c, 12}},
-                          {{{7, 6, 2}, 13},
-                           {{6, 5, 1}, 14},
-                           {{7, 5, 0}, 15},
-                           {{5, 4, 3}, 16},
-                           {{2, 1, 0}, 17}});
-}
-
 } // namespace
 
 TEST (BettiNumbers, PrefixesEqualRanksOfBoundaryMatrices)
@@ -122,7 +99,7 @@ TEST (BettiNumbers, AtRadiusEqualsPrefixEndingThere)
 // triangles bce, ace, abc, acd negative (abe closes a 2-cycle) and beta_1 = 4 - 4 = 0.
 TEST (BettiNumbers, ThesisFigure52Filter)
 {
-  const FilteredComplex complex = figure52Filter();
+  const FilteredComplex complex = test::figure52Filter();
   const PersistenceResult result = computeStandardReduction (complex);
   EXPECT_EQ (result.positive_edges,
              (std::vector<bool>{false, false, true, false, false, true, true, true}));
@@ -141,7 +118,7 @@ TEST (BettiNumbers, ThesisFigure52Filter)
 
 TEST (BettiNumbers, RefusesResultWithoutTriangleMarks)
 {
-  const FilteredComplex complex = figure52Filter();
+  const FilteredComplex complex = test::figure52Filter();
   PersistenceResult h0_only = computeStandardReduction (complex);
   h0_only.positive_triangles.clear();
   EXPECT_THROW (computePrefixBettiNumbers (complex, h0_only),

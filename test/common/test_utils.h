@@ -17,9 +17,13 @@ namespace test {
  * oracle tests. With \a integer_values the edge values are small integers, so
  * many simplices share a filtration value. */
 inline FilteredComplex
-randomComplex (std::mt19937& random, bool integer_values, bool all_triangles)
+randomComplex (std::mt19937& random,
+               bool integer_values,
+               bool all_triangles,
+               std::size_t max_vertices = 18)
 {
-  const std::size_t n = std::uniform_int_distribution<std::size_t> (1, 18) (random);
+  const std::size_t n =
+      std::uniform_int_distribution<std::size_t> (1, max_vertices) (random);
   const double density = std::uniform_real_distribution<double> (0.1, 0.9) (random);
   std::bernoulli_distribution keep_edge (density), keep_triangle (0.7);
   std::uniform_int_distribution<int> integer_value (0, 6);
@@ -57,6 +61,33 @@ randomComplexCase (unsigned int k)
 
 /** Number of cases of the random suite (the issue asks for at least 1000). */
 constexpr unsigned int RANDOM_CASES = 1200;
+
+/** Edge and triangle ids of the filter of figure52Filter(). */
+enum Figure52Edge : SimplexIndex { AB, AE, BE, AD, CD, AC, CE, BC };
+enum Figure52Triangle : SimplexIndex { BCE, ACE, ABC, ACD, ABE };
+
+/** The filter of thesis Fig 5.2: vertices a..e, then edges ab, ae, be, ad, cd, ac,
+ * ce, bc (filter positions 5..12) and triangles bce, ace, abc, acd, abe (13..17);
+ * each simplex's value is its position. */
+inline FilteredComplex
+figure52Filter ()
+{
+  enum { a, b, c, d, e };
+  return FilteredComplex (5,
+                          {{a, b, 5},
+                           {a, e, 6},
+                           {b, e, 7},
+                           {a, d, 8},
+                           {c, d, 9},
+                           {a, c, 10},
+                           {c, e, 11},
+                           {b, c, 12}},
+                          {{{7, 6, 2}, 13},
+                           {{6, 5, 1}, 14},
+                           {{7, 5, 0}, 15},
+                           {{5, 4, 3}, 16},
+                           {{2, 1, 0}, 17}});
+}
 
 /** The finite pairs of \a result as sorted (birth, death) positions in the global
  * filtration order, the form PHAT reports. */

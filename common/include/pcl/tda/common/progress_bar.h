@@ -12,12 +12,12 @@ namespace tda {
  * when its stream is a terminal (so logs and pipes stay clean). */
 class ProgressBar {
 public:
-  ProgressBar (std::string label, std::size_t total, std::FILE* stream = stderr);
+  explicit ProgressBar (std::string label, std::FILE* stream = stderr);
   ~ProgressBar();
 
-  /** \brief Reports that \a done of the total units of work are finished. */
+  /** \brief Reports that \a done of \a total units of work are finished. */
   void
-  update (std::size_t done);
+  update (std::size_t done, std::size_t total);
 
   /** \brief Draws the bar at 100% and ends its line. */
   void
@@ -25,7 +25,6 @@ public:
 
 private:
   std::string label_;
-  std::size_t total_;
   std::FILE* stream_;
   bool enabled_;
   int shown_percent_ = -1;

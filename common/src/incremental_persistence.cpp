@@ -1,0 +1,43 @@
+#include <pcl/tda/common/incremental_persistence.h>
+
+#include "triangle_deaths.h"
+
+namespace pcl {
+namespace tda {
+
+IncrementalCycleTable::IncrementalCycleTable (const FilteredComplex& complex,
+                                              const std::vector<bool>& positive_edges)
+: complex_ (complex)
+, positive_edges_ (positive_edges)
+, cycles_ (complex.numEdges())
+, deaths_ (complex.numEdges(), INVALID_SIMPLEX)
+{}
+
+SimplexIndex
+IncrementalCycleTable::addTriangle (SimplexIndex triangle)
+{
+  CycleSet lambda = positiveBoundary (complex_, positive_edges_, triangle);
+  while (!lambda.empty()) {
+    const SimplexIndex youngest = lambda.back();
+    if (!isOccupied (youngest)) {
+      cycles_[youngest] = std::move (lambda);
+      deaths_[youngest] = triangle;
+      return youngest;
+    }
+    addCycle (lambda, cycles_[youngest], buffer_);
+  }
+  return INVALID_SIMPLEX;
+}
+
+void
+addIncrementalH1Persistence (const FilteredComplex& complex, PersistenceResult& result)
+{
+  IncrementalCycleTable table (complex, result.positive_edges);
+  std::vector<SimplexIndex> killed_edge (complex.numTriangles());
+  for (SimplexIndex t = 0; t < complex.numTriangles(); ++t)
+    killed_edge[t] = table.addTriangle (t);
+  addTriangleDeaths (complex, killed_edge, result);
+}
+
+} // namespace tda
+} // namespace pcl

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <pcl/tda/common/cycle_set.h>
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/persistence_diagram.h>
+
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief Completes \a result, which holds H0 pairs and edge marks, from the edge
+ * whose class each triangle kills (INVALID_SIMPLEX for a positive triangle): H1
+ * pairs, the triangle marks, essential classes of dimension 1 (positive edges never
+ * killed) and 2 (positive triangles). Shared by the engines that compute H1 apart
+ * from H0. */
+void
+addTriangleDeaths (const FilteredComplex& complex,
+                   const std::vector<SimplexIndex>& killed_edge,
+                   PersistenceResult& result);
+
+/** \brief The positive edges of the boundary of \a triangle, in increasing order:
+ * the set Lambda of thesis Alg 5.10-5.13. */
+CycleSet
+positiveBoundary (const FilteredComplex& complex,
+                  const std::vector<bool>& positive_edges,
+                  SimplexIndex triangle);
+
+} // namespace tda
+} // namespace pcl
