@@ -5,6 +5,7 @@
 #include <pcl/tda/apps/synthetic_scenes.h>
 #include <pcl/tda/common/diagram_comparison.h>
 #include <pcl/tda/common/diagram_io.h>
+#include <pcl/tda/common/phat_io.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
@@ -233,6 +234,48 @@ TEST (BarcodeTool, JsonLineAndPictures)
   EXPECT_NE (picture.str().find ("</svg>"), std::string::npos);
 }
 
+TEST (BarcodeTool, EveryEngineWritesTheSameDiagram)
+{
+  PCL_TDA_REQUIRE_DATA ("bunny.pcd");
+  const std::string bunny = test::dataFile ("bunny.pcd");
+  std::string reference;
+  for (const char* engine : {"cohomology", "fip", "incremental", "standard"}) {
+    const std::string csv = temporaryPath (std::string (engine) + ".csv");
+    const RunResult result =
+        run (tool() + " " + bunny + " " + csv + " -radius 0.02 -engine " + engine);
+    ASSERT_EQ (result.exit_code, 0) << result.output;
+    EXPECT_NE (result.output.find (std::string ("H1 (") + engine + ")"),
+               std::string::npos);
+    std::ostringstream text;
+    text << std::ifstream (csv).rdbuf();
+    if (reference.empty())
+      reference = text.str();
+    EXPECT_EQ (text.str(), reference) << engine;
+  }
+  EXPECT_GT (std::count (reference.begin(), reference.end(), '\n'), 500);
+}
+
+TEST (BarcodeTool, ExportsTheComplexForPHAT)
+{
+  PCL_TDA_REQUIRE_DATA ("bunny.pcd");
+  for (const char* name : {"complex.bin", "complex.txt"}) {
+    const std::string matrix = temporaryPath (name);
+    const RunResult result =
+        run (tool() + " " + test::dataFile ("bunny.pcd") + " " +
+             temporaryPath ("phat.csv") + " -radius 0.02 -json -export-phat " + matrix);
+    ASSERT_EQ (result.exit_code, 0) << result.output;
+    const bool binary = std::string (name).find (".bin") != std::string::npos;
+    const FilteredComplex complex = loadPHATBoundaryMatrix (
+        matrix, binary ? PHATFormat::BINARY : PHATFormat::ASCII);
+    EXPECT_EQ (complex.numVertices(), 397u);
+    EXPECT_NE (result.output.find ("\"edges\": " + std::to_string (complex.numEdges())),
+               std::string::npos);
+    EXPECT_NE (result.output.find ("\"triangles\": " +
+                                   std::to_string (complex.numTriangles())),
+               std::string::npos);
+  }
+}
+
 TEST (BarcodeTool, DuplicatePointsAddOnlyZeroLengthBars)
 {
   PCL_TDA_REQUIRE_DATA ("bunny.pcd");
@@ -314,6 +357,7 @@ TEST (BarcodeTool, RefusesBadInputWithoutWritingOutput)
       {bunny + " " + csv + " -radius -0.5", "positive"},
       {bunny + " " + csv + " -radius 0.01 -dim 2", "-dim must be 0 or 1"},
       {bunny + " " + csv + " -radius 0.01 -leaf -1", "-leaf must be >= 0"},
+      {bunny + " " + csv + " -radius 0.01 -engine ripser", "Unknown engine ripser"},
       {bunny + " " + csv + " -radius 0.05 -memory 1", "memory limit"},
       {bunny + " /nonexistent_dir/out.csv -radius 0.01", "cannot write"},
       {bunny_copy + " " + csv + " -radius 0.01 -svg " + link_to_copy,
