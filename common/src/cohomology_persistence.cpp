@@ -3,48 +3,119 @@
 
 #include "triangle_deaths.h"
 
+#include <algorithm>
+
 namespace pcl {
 namespace tda {
 
 namespace {
 
-/** The triangles containing each edge, in filtration order (compressed rows). */
-struct Coboundaries {
-  std::vector<std::uint64_t> offsets;
-  std::vector<SimplexIndex> triangles;
-
-  explicit Coboundaries (const FilteredComplex& complex)
-  : offsets (complex.numEdges() + 1, 0), triangles (3 * complex.numTriangles())
+/** Enumerates the coboundary of an edge (the triangles containing it, by id)
+ * without storing all coboundaries: from the common neighbours of its ends and the
+ * triangle list, whose triangles are grouped by youngest edge and sorted by the
+ * next one within a group. */
+class CoboundaryEnumerator {
+public:
+  explicit CoboundaryEnumerator (const FilteredComplex& complex)
+  : complex_ (complex)
+  , block_offsets_ (complex.numEdges() + 1, 0)
+  , adjacency_offsets_ (complex.numVertices() + 1, 0)
+  , marks_ (complex.numVertices(), {INVALID_SIMPLEX, 0})
   {
     for (const auto& triangle : complex.triangles())
-      for (const auto e : triangle.edges)
-        ++offsets[e + 1];
+      ++block_offsets_[triangle.edges[0] + 1];
     for (std::size_t e = 0; e < complex.numEdges(); ++e)
-      offsets[e + 1] += offsets[e];
-    std::vector<std::uint64_t> next (offsets.begin(), offsets.end() - 1);
-    for (SimplexIndex t = 0; t < complex.numTriangles(); ++t)
-      for (const auto e : complex.triangles()[t].edges)
-        triangles[next[e]++] = t;
+      block_offsets_[e + 1] += block_offsets_[e];
+
+    const auto& edges = complex.edges();
+    for (const auto& edge : edges) {
+      ++adjacency_offsets_[edge.source + 1];
+      ++adjacency_offsets_[edge.target + 1];
+    }
+    for (std::size_t v = 0; v < complex.numVertices(); ++v)
+      adjacency_offsets_[v + 1] += adjacency_offsets_[v];
+    adjacency_.resize (adjacency_offsets_.back());
+    std::vector<std::uint64_t> next (adjacency_offsets_.begin(),
+                                     adjacency_offsets_.end() - 1);
+    for (SimplexIndex e = 0; e < edges.size(); ++e) {
+      adjacency_[next[edges[e].source]++] = {edges[e].target, e};
+      adjacency_[next[edges[e].target]++] = {edges[e].source, e};
+    }
   }
 
-  CycleSet
-  of (SimplexIndex edge) const
-  {
-    return CycleSet (triangles.begin() + offsets[edge],
-                     triangles.begin() + offsets[edge + 1]);
-  }
-
+  /** True when some triangle has \a edge as its youngest edge; the first such
+   * triangle is then the oldest of the coboundary of \a edge. */
   bool
-  empty (SimplexIndex edge) const
+  isYoungestEdgeOfSome (SimplexIndex edge) const
   {
-    return offsets[edge] == offsets[edge + 1];
+    return block_offsets_[edge] != block_offsets_[edge + 1];
   }
 
   SimplexIndex
-  oldest (SimplexIndex edge) const
+  firstTriangleOf (SimplexIndex edge) const
   {
-    return triangles[offsets[edge]];
+    return static_cast<SimplexIndex> (block_offsets_[edge]);
   }
+
+  /** The coboundary of \a edge, sorted, into \a coboundary. */
+  void
+  coboundary (SimplexIndex edge, CycleSet& coboundary)
+  {
+    coboundary.clear();
+    const FilteredEdge& e = complex_.edges()[edge];
+    for (std::uint64_t k = adjacency_offsets_[e.source];
+         k < adjacency_offsets_[e.source + 1];
+         ++k)
+      marks_[adjacency_[k].neighbor] = {edge, adjacency_[k].edge};
+    for (std::uint64_t k = adjacency_offsets_[e.target];
+         k < adjacency_offsets_[e.target + 1];
+         ++k) {
+      const Mark& mark = marks_[adjacency_[k].neighbor];
+      if (mark.edge_searched != edge)
+        continue;
+      const SimplexIndex triangle =
+          triangleOf (edge, mark.other_edge, adjacency_[k].edge);
+      if (triangle != INVALID_SIMPLEX)
+        coboundary.push_back (triangle);
+    }
+    std::sort (coboundary.begin(), coboundary.end());
+  }
+
+private:
+  struct Neighbor {
+    SimplexIndex neighbor;
+    SimplexIndex edge;
+  };
+  struct Mark {
+    SimplexIndex edge_searched; // the edge whose coboundary marked the vertex last
+    SimplexIndex other_edge;    // the edge from the vertex to that edge's source
+  };
+
+  /** The id of the triangle with edges \a a, \a b, \a c, or INVALID_SIMPLEX when
+   * the complex does not have it (it need not be a clique complex). */
+  SimplexIndex
+  triangleOf (SimplexIndex a, SimplexIndex b, SimplexIndex c) const
+  {
+    const SimplexIndex youngest = std::max ({a, b, c});
+    const SimplexIndex oldest = std::min ({a, b, c});
+    const SimplexIndex middle = a ^ b ^ c ^ youngest ^ oldest;
+    const auto& triangles = complex_.triangles();
+    const auto found = std::lower_bound (
+        triangles.begin() + block_offsets_[youngest],
+        triangles.begin() + block_offsets_[youngest + 1],
+        middle,
+        [] (const FilteredTriangle& t, SimplexIndex e) { return t.edges[1] < e; });
+    if (found == triangles.begin() + block_offsets_[youngest + 1] ||
+        found->edges[1] != middle)
+      return INVALID_SIMPLEX;
+    return static_cast<SimplexIndex> (found - triangles.begin());
+  }
+
+  const FilteredComplex& complex_;
+  std::vector<std::uint64_t> block_offsets_;
+  std::vector<std::uint64_t> adjacency_offsets_;
+  std::vector<Neighbor> adjacency_;
+  std::vector<Mark> marks_;
 };
 
 } // namespace
@@ -54,41 +125,36 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
                             PersistenceResult& result,
                             const ProgressCallback& progress)
 {
-  const Coboundaries coboundaries (complex);
-  const auto& triangles = complex.triangles();
+  CoboundaryEnumerator coboundaries (complex);
   const std::size_t num_edges = complex.numEdges();
 
   // killed_edge[t]: the edge whose reduced coboundary has pivot t (owner of t).
-  std::vector<SimplexIndex> killed_edge (triangles.size(), INVALID_SIMPLEX);
-  // Reduced coboundaries of the edges that needed reduction and were paired; an
-  // apparent pair's column is its coboundary, unchanged.
+  std::vector<SimplexIndex> killed_edge (complex.numTriangles(), INVALID_SIMPLEX);
+  // Reduced coboundaries of the paired edges, filled when first needed: an apparent
+  // pair's column is its coboundary, unchanged.
   std::vector<CycleSet> reduced (num_edges);
-  CycleSet column, buffer, owner_column;
+  CycleSet column, buffer;
 
   for (std::size_t k = 0; k < num_edges; ++k) {
     const auto edge = static_cast<SimplexIndex> (num_edges - 1 - k);
     if (progress && (k % 65536 == 0 || k + 1 == num_edges))
       progress (k + 1, num_edges);
-    if (!result.positive_edges[edge] || coboundaries.empty (edge))
+    if (!result.positive_edges[edge])
       continue;
-    const SimplexIndex oldest = coboundaries.oldest (edge);
-    if (triangles[oldest].edges[0] == edge) { // apparent pair
-      killed_edge[oldest] = edge;
+    if (coboundaries.isYoungestEdgeOfSome (edge)) { // apparent pair
+      killed_edge[coboundaries.firstTriangleOf (edge)] = edge;
       continue;
     }
-    column = coboundaries.of (edge);
+    coboundaries.coboundary (edge, column);
     while (!column.empty() && killed_edge[column.front()] != INVALID_SIMPLEX) {
       const SimplexIndex owner = killed_edge[column.front()];
-      if (reduced[owner].empty()) {
-        owner_column = coboundaries.of (owner);
-        addCycle (column, owner_column, buffer);
-      }
-      else
-        addCycle (column, reduced[owner], buffer);
+      if (reduced[owner].empty()) // an apparent pair: its column is its coboundary
+        coboundaries.coboundary (owner, reduced[owner]);
+      addCycle (column, reduced[owner], buffer);
     }
     if (!column.empty()) {
       killed_edge[column.front()] = edge;
-      reduced[edge].swap (column);
+      reduced[edge] = column;
     }
   }
   addTriangleDeaths (complex, killed_edge, result);

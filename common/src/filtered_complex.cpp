@@ -103,6 +103,20 @@ FilteredComplex::FilteredComplex (std::size_t num_vertices,
 }
 
 FilteredComplex
+FilteredComplex::adoptValidParts (std::size_t num_vertices,
+                                  std::vector<FilteredEdge> edges,
+                                  std::vector<FilteredTriangle> triangles,
+                                  std::vector<int> point_indices)
+{
+  FilteredComplex complex;
+  complex.num_vertices_ = num_vertices;
+  complex.edges_ = std::move (edges);
+  complex.triangles_ = std::move (triangles);
+  complex.point_indices_ = std::move (point_indices);
+  return complex;
+}
+
+FilteredComplex
 FilteredComplex::fromLists (std::size_t num_vertices,
                             std::vector<FilteredEdge> edges,
                             const std::vector<std::array<SimplexIndex, 3>>& triangles)

@@ -1,5 +1,7 @@
 #include <pcl/tda/search/clique_complex.h>
 
+#include <parallel/algorithm>
+
 #include <algorithm>
 #include <tuple>
 
@@ -15,7 +17,9 @@ sortedEdges (const NeighborGraph& graph)
   for (std::int64_t u = 0; u < n; ++u)
     for (std::uint64_t k = graph.offsets[u]; k < graph.offsets[u + 1]; ++k)
       edges[k] = {static_cast<SimplexIndex> (u), graph.neighbors[k], graph.lengths[k]};
-  std::sort (
+  // A strict total order (no two edges compare equal): the parallel sort's result
+  // does not depend on the number of threads.
+  __gnu_parallel::sort (
       edges.begin(), edges.end(), [] (const FilteredEdge& a, const FilteredEdge& b) {
         return std::tie (a.value, a.source, a.target) <
                std::tie (b.value, b.source, b.target);
@@ -41,46 +45,80 @@ buildEdgeAdjacency (std::size_t num_vertices, const std::vector<FilteredEdge>& e
     adjacency.entries[next[edges[e].source]++] = {edges[e].target, e};
     adjacency.entries[next[edges[e].target]++] = {edges[e].source, e};
   }
-  const auto n = static_cast<std::int64_t> (num_vertices);
-#pragma omp parallel for schedule(dynamic, 256)
-  for (std::int64_t v = 0; v < n; ++v)
-    std::sort (adjacency.entries.begin() + adjacency.offsets[v],
-               adjacency.entries.begin() + adjacency.offsets[v + 1],
-               [] (const EdgeAdjacency::Entry& a, const EdgeAdjacency::Entry& b) {
-                 return a.neighbor < b.neighbor;
-               });
   return adjacency;
 }
 
 namespace {
 
-/** Calls \a visit(uw, vw) for every vertex w adjacent to both ends of edge \a e
- * through edges uw, vw older than \a e: the triangles whose youngest edge is e. */
-template <typename Visit>
-void
-forEachTriangleOf (SimplexIndex e,
-                   const std::vector<FilteredEdge>& edges,
-                   const EdgeAdjacency& adjacency,
-                   Visit visit)
-{
-  const auto& entries = adjacency.entries;
-  std::uint64_t a = adjacency.offsets[edges[e].source];
-  const std::uint64_t a_end = adjacency.offsets[edges[e].source + 1];
-  std::uint64_t b = adjacency.offsets[edges[e].target];
-  const std::uint64_t b_end = adjacency.offsets[edges[e].target + 1];
-  while (a < a_end && b < b_end) {
-    if (entries[a].neighbor < entries[b].neighbor)
-      ++a;
-    else if (entries[b].neighbor < entries[a].neighbor)
-      ++b;
-    else {
-      if (entries[a].edge < e && entries[b].edge < e)
-        visit (entries[a].edge, entries[b].edge);
-      ++a;
-      ++b;
+/** Finds the triangles of a clique complex by their youngest edge. Per thread: it
+ * keeps a mark per vertex, so each search costs the older neighbourhoods of the
+ * edge's two ends, not their whole adjacency lists. */
+class TriangleFinder {
+public:
+  TriangleFinder (const std::vector<FilteredEdge>& edges,
+                  const EdgeAdjacency& adjacency,
+                  std::size_t num_vertices)
+  : edges_ (edges), adjacency_ (adjacency), marks_ (num_vertices, {INVALID_SIMPLEX, 0})
+  {}
+
+  /** Calls \a visit(uw, vw) for every vertex w adjacent to both ends u, v of edge
+   * \a e through edges uw, vw older than \a e: the triangles whose youngest edge
+   * is e. */
+  template <typename Visit>
+  void
+  forEachTriangleOf (SimplexIndex e, Visit visit)
+  {
+    for (const auto& entry : olderNeighbors (edges_[e].source, e))
+      marks_[entry.neighbor] = {e, entry.edge};
+    for (const auto& entry : olderNeighbors (edges_[e].target, e)) {
+      const Mark& mark = marks_[entry.neighbor];
+      if (mark.edge_searched == e)
+        visit (mark.edge_to_source, entry.edge);
     }
   }
-}
+
+private:
+  struct Mark {
+    SimplexIndex edge_searched;  // the edge whose search marked the vertex last
+    SimplexIndex edge_to_source; // the edge from the vertex to its source
+  };
+
+  struct Range {
+    const EdgeAdjacency::Entry* first;
+    const EdgeAdjacency::Entry* last;
+    const EdgeAdjacency::Entry*
+    begin () const
+    {
+      return first;
+    }
+    const EdgeAdjacency::Entry*
+    end () const
+    {
+      return last;
+    }
+  };
+
+  /** The neighbours of \a vertex through edges older than \a e: a prefix of its
+   * adjacency list, which is sorted by edge. */
+  Range
+  olderNeighbors (SimplexIndex vertex, SimplexIndex e) const
+  {
+    const EdgeAdjacency::Entry* first =
+        adjacency_.entries.data() + adjacency_.offsets[vertex];
+    const EdgeAdjacency::Entry* last =
+        adjacency_.entries.data() + adjacency_.offsets[vertex + 1];
+    return {
+        first,
+        std::lower_bound (
+            first, last, e, [] (const EdgeAdjacency::Entry& entry, SimplexIndex edge) {
+              return entry.edge < edge;
+            })};
+  }
+
+  const std::vector<FilteredEdge>& edges_;
+  const EdgeAdjacency& adjacency_;
+  std::vector<Mark> marks_;
+};
 
 } // namespace
 
@@ -89,12 +127,14 @@ countTriangles (const std::vector<FilteredEdge>& edges, const EdgeAdjacency& adj
 {
   std::vector<std::uint32_t> counts (edges.size(), 0);
   const auto m = static_cast<std::int64_t> (edges.size());
-#pragma omp parallel for schedule(dynamic, 1024)
-  for (std::int64_t e = 0; e < m; ++e)
-    forEachTriangleOf (static_cast<SimplexIndex> (e),
-                       edges,
-                       adjacency,
-                       [&] (SimplexIndex, SimplexIndex) { ++counts[e]; });
+#pragma omp parallel
+  {
+    TriangleFinder finder (edges, adjacency, adjacency.offsets.size() - 1);
+#pragma omp for schedule(dynamic, 1024)
+    for (std::int64_t e = 0; e < m; ++e)
+      finder.forEachTriangleOf (static_cast<SimplexIndex> (e),
+                                [&] (SimplexIndex, SimplexIndex) { ++counts[e]; });
+  }
   return counts;
 }
 
@@ -109,19 +149,22 @@ fillTriangles (const std::vector<FilteredEdge>& edges,
   std::vector<FilteredTriangle> triangles (offsets.back());
 
   const auto m = static_cast<std::int64_t> (edges.size());
-#pragma omp parallel for schedule(dynamic, 1024)
-  for (std::int64_t e = 0; e < m; ++e) {
-    const auto youngest = static_cast<SimplexIndex> (e);
-    auto out = triangles.begin() + offsets[e];
-    forEachTriangleOf (
-        youngest, edges, adjacency, [&] (SimplexIndex uw, SimplexIndex vw) {
-          *out++ = {{youngest, std::max (uw, vw), std::min (uw, vw)}, edges[e].value};
-        });
-    std::sort (triangles.begin() + offsets[e],
-               out,
-               [] (const FilteredTriangle& a, const FilteredTriangle& b) {
-                 return a.edges[1] < b.edges[1];
-               });
+#pragma omp parallel
+  {
+    TriangleFinder finder (edges, adjacency, adjacency.offsets.size() - 1);
+#pragma omp for schedule(dynamic, 1024)
+    for (std::int64_t e = 0; e < m; ++e) {
+      const auto youngest = static_cast<SimplexIndex> (e);
+      auto out = triangles.begin() + offsets[e];
+      finder.forEachTriangleOf (youngest, [&] (SimplexIndex uw, SimplexIndex vw) {
+        *out++ = {{youngest, std::max (uw, vw), std::min (uw, vw)}, edges[e].value};
+      });
+      std::sort (triangles.begin() + offsets[e],
+                 out,
+                 [] (const FilteredTriangle& a, const FilteredTriangle& b) {
+                   return a.edges[1] < b.edges[1];
+                 });
+    }
   }
   return triangles;
 }

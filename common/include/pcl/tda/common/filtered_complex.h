@@ -67,6 +67,15 @@ public:
                    std::vector<FilteredTriangle> triangles,
                    std::vector<int> point_indices = {});
 
+  /** \brief Takes parts that are valid and in filtration order by construction, as
+   * the complex builders make them, without checking them (the checks of the
+   * constructor cost as much as a builder phase). Parts as for the constructor. */
+  static FilteredComplex
+  adoptValidParts (std::size_t num_vertices,
+                   std::vector<FilteredEdge> edges,
+                   std::vector<FilteredTriangle> triangles,
+                   std::vector<int> point_indices);
+
   /** \brief Builds a complex from plain lists in any order, e.g. for tests and
    * random complexes. A triangle is given by its vertices; its value is the largest
    * value of its edges, which must all be in \a edges.

@@ -9,9 +9,9 @@
 namespace pcl {
 namespace tda {
 
-/** \brief Every vertex's neighbours, in increasing order, each with the filtration
- * id of the edge that joins them: the neighbours of vertex v are entries
- * offsets[v] to offsets[v + 1] of \a entries. */
+/** \brief Every vertex's neighbours, each with the filtration id of the edge that
+ * joins them, in filtration order of the edges: the neighbours of vertex v are
+ * entries offsets[v] to offsets[v + 1] of \a entries. */
 struct EdgeAdjacency {
   struct Entry {
     SimplexIndex neighbor;

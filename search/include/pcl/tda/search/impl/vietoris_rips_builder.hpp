@@ -196,7 +196,7 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
   }
   timings_.triangles = watch.getTimeSeconds();
 
-  complex = FilteredComplex (
+  complex = FilteredComplex::adoptValidParts (
       points.size(), std::move (edges), std::move (triangles), std::move (order));
   deinitCompute();
   return true;
