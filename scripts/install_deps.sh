@@ -7,7 +7,7 @@ packages=(
   cmake g++ make pkg-config          # build
   libpcl-dev libeigen3-dev libboost-dev # libraries
   libgtest-dev libbenchmark-dev ccache  # tests and build speed
-  ripser libphat-dev                 # reference tools, for tests and benchmarks only
+  ripser libphat-dev libgudhi-dev time # reference tools and timing, for tests and benchmarks
 )
 
 missing=()
