@@ -4,6 +4,7 @@
 #include "triangle_deaths.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace pcl {
 namespace tda {
@@ -131,8 +132,8 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
   // killed_edge[t]: the edge whose reduced coboundary has pivot t (owner of t).
   std::vector<SimplexIndex> killed_edge (complex.numTriangles(), INVALID_SIMPLEX);
   // Reduced coboundaries of the paired edges, filled when first needed: an apparent
-  // pair's column is its coboundary, unchanged.
-  std::vector<CycleSet> reduced (num_edges);
+  // pair's column is its coboundary, unchanged. Few edges need one.
+  std::unordered_map<SimplexIndex, CycleSet> reduced;
   CycleSet column, buffer;
 
   for (std::size_t k = 0; k < num_edges; ++k) {
@@ -147,10 +148,10 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
     }
     coboundaries.coboundary (edge, column);
     while (!column.empty() && killed_edge[column.front()] != INVALID_SIMPLEX) {
-      const SimplexIndex owner = killed_edge[column.front()];
-      if (reduced[owner].empty()) // an apparent pair: its column is its coboundary
-        coboundaries.coboundary (owner, reduced[owner]);
-      addCycle (column, reduced[owner], buffer);
+      CycleSet& owner_column = reduced[killed_edge[column.front()]];
+      if (owner_column.empty()) // an apparent pair: its column is its coboundary
+        coboundaries.coboundary (killed_edge[column.front()], owner_column);
+      addCycle (column, owner_column, buffer);
     }
     if (!column.empty()) {
       killed_edge[column.front()] = edge;

@@ -82,7 +82,7 @@ computeStandardReduction (const FilteredComplex& complex,
   }
 
   for (std::uint32_t g = 0; g < num_columns; ++g)
-    if (reduced[g].empty() && pivot_owner[g] == NO_COLUMN)
+    if (order[g].dimension < 2 && reduced[g].empty() && pivot_owner[g] == NO_COLUMN)
       result.pairs.push_back ({order[g].dimension,
                                order[g].index,
                                INVALID_SIMPLEX,

@@ -1,5 +1,6 @@
 #include "triangle_deaths.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace pcl {
@@ -15,6 +16,9 @@ addTriangleDeaths (const FilteredComplex& complex,
   constexpr double INF = std::numeric_limits<double>::infinity();
   result.positive_triangles.assign (triangles.size(), false);
   std::vector<bool> killed (edges.size(), false);
+  result.pairs.reserve (result.pairs.size() + std::count (result.positive_edges.begin(),
+                                                          result.positive_edges.end(),
+                                                          true));
   for (SimplexIndex t = 0; t < triangles.size(); ++t) {
     const SimplexIndex e = killed_edge[t];
     if (e == INVALID_SIMPLEX) {
@@ -27,9 +31,6 @@ addTriangleDeaths (const FilteredComplex& complex,
   for (SimplexIndex e = 0; e < edges.size(); ++e)
     if (result.positive_edges[e] && !killed[e])
       result.pairs.push_back ({1, e, INVALID_SIMPLEX, edges[e].value, INF});
-  for (SimplexIndex t = 0; t < triangles.size(); ++t)
-    if (result.positive_triangles[t])
-      result.pairs.push_back ({2, t, INVALID_SIMPLEX, triangles[t].value, INF});
 }
 
 CycleSet

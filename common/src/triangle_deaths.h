@@ -11,8 +11,8 @@ namespace tda {
 
 /** \brief Completes \a result, which holds H0 pairs and edge marks, from the edge
  * whose class each triangle kills (INVALID_SIMPLEX for a positive triangle): H1
- * pairs, the triangle marks, essential classes of dimension 1 (positive edges never
- * killed) and 2 (positive triangles). Shared by the engines that compute H1 apart
+ * pairs, the triangle marks and the essential classes of dimension 1 (positive edges
+ * never killed). Shared by the engines that compute H1 apart
  * from H0. */
 void
 addTriangleDeaths (const FilteredComplex& complex,

@@ -39,9 +39,11 @@ buildEdgeAdjacency (std::size_t num_vertices, const std::vector<FilteredEdge>& e
   for (std::size_t v = 0; v < num_vertices; ++v)
     adjacency.offsets[v + 1] += adjacency.offsets[v];
   adjacency.entries.resize (adjacency.offsets.back());
+  adjacency.positions.resize (edges.size());
   std::vector<std::uint64_t> next (adjacency.offsets.begin(),
                                    adjacency.offsets.end() - 1);
   for (SimplexIndex e = 0; e < edges.size(); ++e) {
+    adjacency.positions[e] = {next[edges[e].source], next[edges[e].target]};
     adjacency.entries[next[edges[e].source]++] = {edges[e].target, e};
     adjacency.entries[next[edges[e].target]++] = {edges[e].source, e};
   }
@@ -68,9 +70,9 @@ public:
   void
   forEachTriangleOf (SimplexIndex e, Visit visit)
   {
-    for (const auto& entry : olderNeighbors (edges_[e].source, e))
+    for (const auto& entry : olderNeighbors (edges_[e].source, e, 0))
       marks_[entry.neighbor] = {e, entry.edge};
-    for (const auto& entry : olderNeighbors (edges_[e].target, e)) {
+    for (const auto& entry : olderNeighbors (edges_[e].target, e, 1)) {
       const Mark& mark = marks_[entry.neighbor];
       if (mark.edge_searched == e)
         visit (mark.edge_to_source, entry.edge);
@@ -98,21 +100,15 @@ private:
     }
   };
 
-  /** The neighbours of \a vertex through edges older than \a e: a prefix of its
-   * adjacency list, which is sorted by edge. */
+  /** The neighbours of \a vertex, end \a side (0: source, 1: target) of edge \a e,
+   * through edges older than \a e: a prefix of its adjacency list, which is sorted
+   * by edge. */
   Range
-  olderNeighbors (SimplexIndex vertex, SimplexIndex e) const
+  olderNeighbors (SimplexIndex vertex, SimplexIndex e, int side) const
   {
-    const EdgeAdjacency::Entry* first =
-        adjacency_.entries.data() + adjacency_.offsets[vertex];
-    const EdgeAdjacency::Entry* last =
-        adjacency_.entries.data() + adjacency_.offsets[vertex + 1];
-    return {
-        first,
-        std::lower_bound (
-            first, last, e, [] (const EdgeAdjacency::Entry& entry, SimplexIndex edge) {
-              return entry.edge < edge;
-            })};
+    const EdgeAdjacency::Entry* entries = adjacency_.entries.data();
+    return {entries + adjacency_.offsets[vertex],
+            entries + adjacency_.positions[e][side]};
   }
 
   const std::vector<FilteredEdge>& edges_;

@@ -15,7 +15,7 @@ distance (const Point3d& a, const Point3d& b)
 }
 
 UniformGridSearch::UniformGridSearch (const std::vector<Point3d>& points, double radius)
-: points_ (points), radius_ (radius), origin_{0.0, 0.0, 0.0}
+: radius_ (radius), origin_{0.0, 0.0, 0.0}
 {
   if (!(radius > 0.0))
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
@@ -39,15 +39,40 @@ UniformGridSearch::UniformGridSearch (const std::vector<Point3d>& points, double
   for (SimplexIndex i = 0; i < points.size(); ++i)
     cell_of_point[i] = {cellOf (points[i]), i};
   std::sort (cell_of_point.begin(), cell_of_point.end());
+  std::vector<CellKey> cell_keys;
+  std::vector<std::uint32_t> cell_offsets;
   point_ids_.reserve (points.size());
+  cell_of_point_.resize (points.size());
   for (std::size_t k = 0; k < cell_of_point.size(); ++k) {
     if (k == 0 || cell_of_point[k].first != cell_of_point[k - 1].first) {
-      cell_keys_.push_back (cell_of_point[k].first);
-      cell_offsets_.push_back (static_cast<std::uint32_t> (k));
+      cell_keys.push_back (cell_of_point[k].first);
+      cell_offsets.push_back (static_cast<std::uint32_t> (k));
     }
     point_ids_.push_back (cell_of_point[k].second);
+    cell_of_point_[cell_of_point[k].second] =
+        static_cast<std::uint32_t> (cell_keys.size() - 1);
   }
-  cell_offsets_.push_back (static_cast<std::uint32_t> (points.size()));
+  cell_offsets.push_back (static_cast<std::uint32_t> (points.size()));
+
+  // The stencil of a cell: its column (x, y - 1 .. y + 1) and the next one in x.
+  // Cells in key order are consecutive in z, so each (dx, dy) is one run of cells,
+  // and so one run of point_ids_.
+  stencils_.resize (cell_keys.size());
+  const auto num_cells = static_cast<std::int64_t> (cell_keys.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t c = 0; c < num_cells; ++c) {
+    const CellKey& center = cell_keys[c];
+    std::size_t run = 0;
+    for (std::int64_t dx = 0; dx <= 1; ++dx)
+      for (std::int64_t dy = -1; dy <= 1; ++dy, ++run) {
+        const CellKey first{center[0] + dx, center[1] + dy, center[2] - 1};
+        const CellKey last{center[0] + dx, center[1] + dy, center[2] + 1};
+        const auto begin = std::lower_bound (cell_keys.begin(), cell_keys.end(), first);
+        const auto end = std::upper_bound (begin, cell_keys.end(), last);
+        stencils_[c][run] = {cell_offsets[begin - cell_keys.begin()],
+                             cell_offsets[end - cell_keys.begin()]};
+      }
+  }
 }
 
 UniformGridSearch::CellKey
@@ -65,20 +90,9 @@ UniformGridSearch::operator() (SimplexIndex vertex,
                                std::vector<SimplexIndex>& candidates) const
 {
   candidates.clear();
-  const CellKey center = cellOf (points_[vertex]);
-  for (std::int64_t dx = -1; dx <= 1; ++dx)
-    for (std::int64_t dy = -1; dy <= 1; ++dy) {
-      // The three cells (x, y, z - 1 .. z + 1) are consecutive in key order.
-      const CellKey first{center[0] + dx, center[1] + dy, center[2] - 1};
-      const CellKey last{center[0] + dx, center[1] + dy, center[2] + 1};
-      auto cell = std::lower_bound (cell_keys_.begin(), cell_keys_.end(), first);
-      for (; cell != cell_keys_.end() && *cell <= last; ++cell) {
-        const std::size_t c = cell - cell_keys_.begin();
-        candidates.insert (candidates.end(),
-                           point_ids_.begin() + cell_offsets_[c],
-                           point_ids_.begin() + cell_offsets_[c + 1]);
-      }
-    }
+  for (const auto& [begin, end] : stencils_[cell_of_point_[vertex]])
+    candidates.insert (
+        candidates.end(), point_ids_.begin() + begin, point_ids_.begin() + end);
 }
 
 namespace {

@@ -40,7 +40,7 @@ bool
 parseEngineName (const std::string& name, PersistenceEngine& engine);
 
 /** \brief Persistence pairs of dimensions 0 and 1, essential classes of dimensions
- * 0 to 2 and positive/negative marks of all edges and triangles, by \a engine.
+ * 0 and 1 and positive/negative marks of all edges and triangles, by \a engine.
  * \param[in] complex the filtered complex
  * \param[in] engine the engine (default: the fastest)
  * \param[in] progress optional callback (units of work done, total)

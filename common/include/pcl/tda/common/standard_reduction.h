@@ -19,7 +19,7 @@ using ProgressCallback = std::function<void (std::size_t done, std::size_t total
  * tested against.
  * \param[in] complex the filtered complex (dimension <= 2)
  * \param[in] progress optional callback, given reduced columns and all columns
- * \return all pairs of dimensions 0 and 1, essential classes of dimensions 0-2,
+ * \return all pairs of dimensions 0 and 1, essential classes of dimensions 0 and 1,
  * and the positive/negative marks of all edges and triangles
  */
 PersistenceResult

@@ -3,6 +3,7 @@
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/search/neighbor_graph.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,9 @@ struct EdgeAdjacency {
   };
   std::vector<std::uint64_t> offsets;
   std::vector<Entry> entries;
+  /** Position of every edge in the lists of its source and of its target: the
+   * entries before it are the neighbours through older edges. */
+  std::vector<std::array<std::uint64_t, 2>> positions;
 };
 
 /** \brief Edge list phase (thesis Alg 3.3): the edges of \a graph in filtration

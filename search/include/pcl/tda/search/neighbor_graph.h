@@ -36,13 +36,15 @@ struct NeighborGraph {
 };
 
 /** \brief Lists candidate neighbours of a vertex: any set of vertices that holds all
- * those within the radius (the exact test is made afterwards). Must be callable
- * from several threads at once. */
+ * later vertices (larger ids, i.e. later in canonical order) within the radius; the
+ * exact test is made afterwards. Must be callable from several threads at once. */
 using CandidateSearch =
     std::function<void (SimplexIndex vertex, std::vector<SimplexIndex>& candidates)>;
 
-/** \brief Candidate search by a uniform grid of cubic cells of the radius' size: the
- * candidates of a point are the points of its cell and of the 26 cells around it. */
+/** \brief Candidate search by a uniform grid of cubic cells of the radius' size.
+ * Canonical order sorts by x first, so a later point lies in the same cell column
+ * or in the next one in x: the candidates of a point are the points of the 18 cells
+ * of those two layers around its cell, found once per cell at construction. */
 class UniformGridSearch {
 public:
   /** \throws pcl::BadArgumentException when the radius is not positive or so small
@@ -58,12 +60,15 @@ private:
   CellKey
   cellOf (const Point3d& point) const;
 
-  const std::vector<Point3d>& points_;
+  /** Six runs [begin, end) of point_ids_: the cells (x + dx, y + dy, z - 1 .. z + 1)
+   * for dx in {0, 1} and dy in {-1, 0, 1}. */
+  using Stencil = std::array<std::pair<std::uint32_t, std::uint32_t>, 6>;
+
   double radius_;
   Point3d origin_;
-  std::vector<CellKey> cell_keys_;          // sorted, one per non-empty cell
-  std::vector<std::uint32_t> cell_offsets_; // CSR into point_ids_
-  std::vector<SimplexIndex> point_ids_;     // points grouped by cell
+  std::vector<SimplexIndex> point_ids_; // points grouped by cell, cells in key order
+  std::vector<std::uint32_t> cell_of_point_; // index of every point's cell
+  std::vector<Stencil> stencils_;            // one per non-empty cell
 };
 
 /** \brief Count pass of the neighbour search (thesis Alg 3.2): the number of
