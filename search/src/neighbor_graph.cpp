@@ -97,19 +97,33 @@ UniformGridSearch::operator() (SimplexIndex vertex,
 
 namespace {
 
-/** The neighbours j > \a vertex within \a radius, sorted, from the candidates. */
+/** Whether distance(\a p, \a q) <= \a radius, deciding on the squared distance
+ * where it is clear and taking the square root only near the boundary. */
+bool
+withinRadius (const Point3d& p, const Point3d& q, double radius)
+{
+  const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];
+  const double squared = dx * dx + dy * dy + dz * dz;
+  const double squared_radius = radius * radius;
+  if (squared < squared_radius * (1.0 - 1e-9))
+    return true;
+  if (squared > squared_radius * (1.0 + 1e-9))
+    return false;
+  return std::sqrt (squared) <= radius;
+}
+
+/** Keeps the candidates that are neighbours j > \a vertex within \a radius. */
 void
-collectNeighbors (const std::vector<Point3d>& points,
-                  double radius,
-                  SimplexIndex vertex,
-                  std::vector<SimplexIndex>& candidates)
+keepLaterNeighbors (const std::vector<Point3d>& points,
+                    double radius,
+                    SimplexIndex vertex,
+                    std::vector<SimplexIndex>& candidates)
 {
   const auto outside = [&] (SimplexIndex j) {
-    return j <= vertex || distance (points[vertex], points[j]) > radius;
+    return j <= vertex || !withinRadius (points[vertex], points[j], radius);
   };
   candidates.erase (std::remove_if (candidates.begin(), candidates.end(), outside),
                     candidates.end());
-  std::sort (candidates.begin(), candidates.end());
 }
 
 } // namespace
@@ -127,7 +141,7 @@ countNeighbors (const std::vector<Point3d>& points,
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t i = 0; i < n; ++i) {
       search (static_cast<SimplexIndex> (i), candidates);
-      collectNeighbors (points, radius, static_cast<SimplexIndex> (i), candidates);
+      keepLaterNeighbors (points, radius, static_cast<SimplexIndex> (i), candidates);
       counts[i] = static_cast<std::uint32_t> (candidates.size());
     }
   }
@@ -154,7 +168,8 @@ fillNeighborGraph (const std::vector<Point3d>& points,
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t i = 0; i < n; ++i) {
       search (static_cast<SimplexIndex> (i), candidates);
-      collectNeighbors (points, radius, static_cast<SimplexIndex> (i), candidates);
+      keepLaterNeighbors (points, radius, static_cast<SimplexIndex> (i), candidates);
+      std::sort (candidates.begin(), candidates.end());
       std::uint64_t position = graph.offsets[i];
       for (const SimplexIndex j : candidates) {
         graph.neighbors[position] = j;
