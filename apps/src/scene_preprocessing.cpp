@@ -1,0 +1,106 @@
+#include <pcl/common/point_tests.h>
+#include <pcl/filters/extract_indices.h>
+#include <pcl/filters/voxel_grid.h>
+#include <pcl/segmentation/sac_segmentation.h>
+#include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/exceptions.h>
+
+#include <cmath>
+
+namespace pcl {
+namespace tda {
+
+namespace {
+
+template <typename PointT>
+void
+requirePoints (const pcl::PointCloud<PointT>& cloud, const char* after)
+{
+  if (cloud.empty())
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "no point is left " << after);
+}
+
+} // namespace
+
+template <typename PointT>
+typename pcl::PointCloud<PointT>::Ptr
+preprocessScene (const pcl::PointCloud<PointT>& cloud,
+                 const ScenePreprocessing& options,
+                 PreprocessingCounts* counts)
+{
+  if (!(options.max_depth >= 0.0) || !(options.leaf >= 0.0) ||
+      !(options.plane_distance > 0.0))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "the depth cut-off and the leaf must be >= 0 and the plane "
+                         "distance > 0");
+  using Cloud = pcl::PointCloud<PointT>;
+  PreprocessingCounts removed;
+  typename Cloud::Ptr result (new Cloud);
+  result->header = cloud.header;
+  result->sensor_origin_ = cloud.sensor_origin_;
+  result->sensor_orientation_ = cloud.sensor_orientation_;
+  for (const auto& point : cloud) {
+    if (!pcl::isXYZFinite (point))
+      ++removed.non_finite;
+    else if (options.max_depth > 0.0 && point.z > options.max_depth)
+      ++removed.beyond_depth;
+    else
+      result->push_back (point);
+  }
+  requirePoints (*result,
+                 options.max_depth > 0.0 ? "within the depth cut-off"
+                                         : "(all are NaN or infinite)");
+
+  if (options.remove_plane) {
+    pcl::SACSegmentation<PointT> segmentation;
+    segmentation.setOptimizeCoefficients (true);
+    segmentation.setModelType (pcl::SACMODEL_PLANE);
+    segmentation.setMethodType (pcl::SAC_RANSAC);
+    segmentation.setMaxIterations (200);
+    segmentation.setDistanceThreshold (options.plane_distance);
+    segmentation.setInputCloud (result);
+    pcl::PointIndices::Ptr inliers (new pcl::PointIndices);
+    pcl::ModelCoefficients coefficients;
+    segmentation.segment (*inliers, coefficients);
+    if (inliers->indices.empty())
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "no plane found among the " << result->size()
+                                                       << " points (use -plane 0)");
+    removed.plane = inliers->indices.size();
+    pcl::ExtractIndices<PointT> extract;
+    extract.setInputCloud (result);
+    extract.setIndices (inliers);
+    extract.setNegative (true);
+    typename Cloud::Ptr rest (new Cloud);
+    extract.filter (*rest);
+    result = rest;
+    requirePoints (*result, "after removing the plane");
+  }
+
+  if (options.leaf > 0.0) {
+    pcl::VoxelGrid<PointT> grid;
+    grid.setInputCloud (result);
+    const auto leaf = static_cast<float> (options.leaf);
+    grid.setLeafSize (leaf, leaf, leaf);
+    typename Cloud::Ptr filtered (new Cloud);
+    grid.filter (*filtered);
+    result = filtered;
+    requirePoints (*result, "after the voxel grid (is the leaf too small?)");
+  }
+  removed.after_voxel_grid = result->size();
+  if (counts)
+    *counts = removed;
+  return result;
+}
+
+template pcl::PointCloud<pcl::PointXYZ>::Ptr
+preprocessScene (const pcl::PointCloud<pcl::PointXYZ>&,
+                 const ScenePreprocessing&,
+                 PreprocessingCounts*);
+template pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
+preprocessScene (const pcl::PointCloud<pcl::PointXYZRGBL>&,
+                 const ScenePreprocessing&,
+                 PreprocessingCounts*);
+
+} // namespace tda
+} // namespace pcl

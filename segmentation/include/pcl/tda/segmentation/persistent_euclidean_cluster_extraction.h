@@ -1,0 +1,384 @@
+#pragma once
+
+#include <pcl/search/search.h>
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/search/neighbor_graph.h>
+#include <pcl/pcl_base.h>
+#include <pcl/PointIndices.h>
+
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief Decides whether a pair of vertices within the search radius is an edge. */
+using EdgeTest = std::function<bool (SimplexIndex, SimplexIndex)>;
+
+/** \brief The minimum spanning forest of the radius graph of \a points: the only
+ * edges that H0 of the graph's filtration (edges entering at their lengths) needs,
+ * since the negative edges of the elder rule form that forest (thesis Sec 4.1.4).
+ *
+ * Pairs at distance <= \a radius (length in double precision, as
+ * pcl::tda::distance()) that pass \a accept (if given) are the edges; they are found
+ * with a uniform grid of cell size \a radius, each pair once, in parallel, and the
+ * forest is taken by Filter-Kruskal (Osipov, Sanders, Singler 2009), which sorts
+ * only the edges that can still join two components.
+ * \param[in] points the points, vertex v at points[v]
+ * \param[in] radius the largest edge length (> 0)
+ * \param[in] accept optional extra test of a pair within the radius
+ * \param[in] threads OpenMP threads (0: OpenMP's default)
+ * \param[out] num_graph_edges number of edges of the radius graph
+ * \return the forest's edges in filtration order (value, source, target)
+ * \throws pcl::BadArgumentException when the radius is not positive or too small
+ * for the extent of the points (more than 2^20 cells along an axis) */
+std::vector<FilteredEdge>
+radiusGraphSpanningForest (const std::vector<Point3d>& points,
+                           double radius,
+                           const EdgeTest& accept,
+                           unsigned int threads,
+                           std::size_t& num_graph_edges);
+
+/** \brief Connected components of the radius graph of a complex at a cut distance,
+ * read from its H0 persistence (thesis Sec 4.1.5): the points joined, by negative
+ * edges of value <= \a cut, to each essential class of the filtration cut there.
+ * \param[in] complex the complex (its edges; triangles are ignored)
+ * \param[in] h0 the result of computeH0Persistence() on \a complex
+ * \param[in] cut the distance at which the components are taken (edges above it are
+ * left out; infinity takes every edge)
+ * \return every component as sorted input point indices, largest first, equal
+ * sizes by smallest index */
+std::vector<pcl::Indices>
+persistentComponents (const FilteredComplex& complex,
+                      const PersistenceResult& h0,
+                      double cut = std::numeric_limits<double>::infinity());
+
+/** \brief The H0 diagram of the thesis' stepped filtration (Sec 4.4.2): every death
+ * rounded up to a multiple of \a max_distance / \a steps (0 steps: exact values),
+ * zero-length intervals dropped, essential classes with death infinity. */
+PersistenceDiagram
+steppedH0Diagram (const PersistenceResult& h0, double max_distance, unsigned int steps);
+
+/** \brief The automatic cluster distance (see
+ * PersistentEuclideanClusterExtraction::setAutoMaxDistance()) from the H0
+ * persistence of a complex built up to \a max_distance.
+ * \param[in] complex the complex
+ * \param[in] h0 the result of computeH0Persistence() on \a complex
+ * \param[in] max_distance the end of the filtration
+ * \param[in] min_cluster_size merges of two components of at least this many points
+ * (and at least 2) are the significant ones
+ * \param[in] gap_ratio a gap counts when its upper end is at least this many times
+ * its lower end (> 1)
+ * \return a distance in (0, max_distance] */
+double
+chooseClusterDistance (const FilteredComplex& complex,
+                       const PersistenceResult& h0,
+                       double max_distance,
+                       std::size_t min_cluster_size,
+                       double gap_ratio);
+
+/** \brief Euclidean cluster extraction by topological persistence (thesis Sec 4.1,
+ * Alg 4.6): a drop-in replacement for pcl::EuclideanClusterExtraction that also
+ * gives the H0 persistence diagram, i.e. how stable every cluster is, and can
+ * choose its distance by itself.
+ *
+ * The points (their finite ones among the indices) are the vertices of the radius
+ * graph, the 1-skeleton of the Vietoris-Rips complex VR_r at r = max distance; its
+ * edges enter the filtration at their lengths. H0 is computed by union-find and the
+ * elder rule (Sec 4.1.4): one bar per component, essential bars for the components
+ * left at r. The clusters are the point sets joined to the essential classes (Sec
+ * 4.1.5) whose size is within [min, max], sorted largest first (equal sizes by
+ * smallest index), each sorted, with the header of the input. They do not depend on
+ * the input order or the number of threads.
+ *
+ * Same clusters as pcl::EuclideanClusterExtraction with cluster tolerance r and the
+ * same size limits, with two documented conventions:
+ * - By default an edge is in when its length, computed in double precision from
+ *   the float coordinates, is at most r: an edge of length exactly r is in, as in
+ *   VR_r. PCL's k-d tree keeps a neighbour when its squared distance, computed in
+ *   float, is strictly below float(r^2): a pair at exactly r is out there, and a
+ *   pair within float rounding of r (about 1e-7 r) can fall either way, e.g. on
+ *   scans whose coordinates are quantized to a grid that r is a multiple of.
+ *   setPCLDistanceTest(true) applies PCL's test instead, for identical clusters
+ *   in those cases too.
+ * - A component of more than max points is reported (a PCL_WARN and
+ *   getNumOversizedClusters()); it is dropped, like PCL does silently, unless
+ *   setKeepOversizedClusters(true).
+ *
+ * \code
+ * pcl::tda::PersistentEuclideanClusterExtraction<pcl::PointXYZ> ec;
+ * ec.setInputCloud(cloud);
+ * ec.setMaxDistance(0.02);
+ * ec.setMinClusterSize(32);
+ * std::vector<pcl::PointIndices> clusters;
+ * ec.extract(clusters);
+ * const pcl::tda::PersistenceDiagram& diagram = ec.getPersistenceDiagram();
+ * \endcode
+ */
+template <typename PointT>
+class PersistentEuclideanClusterExtraction : public pcl::PCLBase<PointT> {
+public:
+  using Ptr = shared_ptr<PersistentEuclideanClusterExtraction<PointT>>;
+  using ConstPtr = shared_ptr<const PersistentEuclideanClusterExtraction<PointT>>;
+  using PointCloud = pcl::PointCloud<PointT>;
+  using KdTree = pcl::search::Search<PointT>;
+  using KdTreePtr = typename KdTree::Ptr;
+
+  using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::indices_;
+  using pcl::PCLBase<PointT>::initCompute;
+  using pcl::PCLBase<PointT>::deinitCompute;
+
+  /** \brief Default of setAutoGapRatio(). */
+  static constexpr double DEFAULT_GAP_RATIO = 2.0;
+
+  PersistentEuclideanClusterExtraction() = default;
+
+  /** \brief Sets a search object for the radius queries (the graph is then built by
+   * VietorisRipsBuilder on it). Without one (the default), a uniform grid of cell
+   * size max distance gives the edges and only their minimum spanning forest is
+   * kept (radiusGraphSpanningForest()), which is much faster; the clusters and the
+   * diagram are the same. */
+  void
+  setSearchMethod (const KdTreePtr& tree)
+  {
+    tree_ = tree;
+  }
+
+  KdTreePtr
+  getSearchMethod () const
+  {
+    return tree_;
+  }
+
+  /** \brief Sets the filtration's last radius r (> 0): points closer than r (or at
+   * exactly r) are in one cluster, as with the cluster tolerance of
+   * pcl::EuclideanClusterExtraction. With setAutoMaxDistance(true) it bounds the
+   * search for the distance instead. */
+  void
+  setMaxDistance (double max_distance)
+  {
+    max_distance_ = max_distance;
+  }
+
+  double
+  getMaxDistance () const
+  {
+    return max_distance_;
+  }
+
+  /** \brief Sets the smallest number of points of a cluster (default 1). */
+  void
+  setMinClusterSize (pcl::uindex_t min_cluster_size)
+  {
+    min_pts_per_cluster_ = min_cluster_size;
+  }
+
+  pcl::uindex_t
+  getMinClusterSize () const
+  {
+    return min_pts_per_cluster_;
+  }
+
+  /** \brief Sets the largest number of points of a cluster (default: no limit);
+   * larger components are reported and dropped or kept, see
+   * setKeepOversizedClusters(). */
+  void
+  setMaxClusterSize (pcl::uindex_t max_cluster_size)
+  {
+    max_pts_per_cluster_ = max_cluster_size;
+  }
+
+  pcl::uindex_t
+  getMaxClusterSize () const
+  {
+    return max_pts_per_cluster_;
+  }
+
+  /** \brief Whether components of more than the maximum number of points are kept
+   * as clusters (true) or dropped (false, the default, as PCL does). Either way
+   * extract() warns about them and getNumOversizedClusters() counts them. */
+  void
+  setKeepOversizedClusters (bool keep)
+  {
+    keep_oversized_clusters_ = keep;
+  }
+
+  bool
+  getKeepOversizedClusters () const
+  {
+    return keep_oversized_clusters_;
+  }
+
+  /** \brief Whether two points are neighbours by PCL's k-d tree test, float squared
+   * distance strictly below float(r^2) (true), or by length in double precision at
+   * most r (false, the default, as in VR_r). Only pairs within float rounding of r
+   * are affected; the diagram keeps their lengths in double precision. */
+  void
+  setPCLDistanceTest (bool enabled)
+  {
+    pcl_distance_test_ = enabled;
+  }
+
+  bool
+  getPCLDistanceTest () const
+  {
+    return pcl_distance_test_;
+  }
+
+  /** \brief Sets the number of steps of the thesis' stepped filtration (Sec 4.4.2):
+   * the diagram's death values are rounded up to multiples of max distance / n. 0
+   * (the default) keeps the exact edge lengths. The clusters are the same. */
+  void
+  setFiltrationSteps (unsigned int steps)
+  {
+    filtration_steps_ = steps;
+  }
+
+  unsigned int
+  getFiltrationSteps () const
+  {
+    return filtration_steps_;
+  }
+
+  /** \brief Lets extract() choose the cluster distance from the H0 diagram of the
+   * filtration up to max distance (default false).
+   *
+   * The rule: the significant merges are those of two components of at least
+   * max(min cluster size, 2) points each, i.e. of two would-be clusters; the scale
+   * of the sampling is the median death. Going up from that median through the
+   * deaths of the significant merges, the first gap whose upper end is at least
+   * the gap ratio times its lower end separates the merges inside objects from
+   * those between objects, and the distance chosen is the geometric middle of that
+   * gap. Without such a gap, every merge up to max distance is taken to be inside
+   * an object and the distance is max distance. Max distance should then be a
+   * generous upper bound, e.g. a few times the point spacing more than the gap
+   * expected between objects. */
+  void
+  setAutoMaxDistance (bool enabled)
+  {
+    auto_max_distance_ = enabled;
+  }
+
+  bool
+  getAutoMaxDistance () const
+  {
+    return auto_max_distance_;
+  }
+
+  /** \brief Sets how much larger the upper end of a gap must be than its lower end
+   * for setAutoMaxDistance() to cut there (> 1, default DEFAULT_GAP_RATIO). */
+  void
+  setAutoGapRatio (double ratio)
+  {
+    gap_ratio_ = ratio;
+  }
+
+  double
+  getAutoGapRatio () const
+  {
+    return gap_ratio_;
+  }
+
+  /** \brief Sets the number of OpenMP threads of the radius graph build (0: OpenMP's
+   * default). The results do not depend on it. */
+  void
+  setNumberOfThreads (unsigned int threads)
+  {
+    threads_ = threads;
+  }
+
+  unsigned int
+  getNumberOfThreads () const
+  {
+    return threads_;
+  }
+
+  /** \brief Extracts the clusters of the input points (or of the indexed ones).
+   * On failure (no input, no finite point, max distance not positive and finite,
+   * min size above max size, a bad gap ratio, a graph over the memory limit)
+   * prints a PCL_ERROR naming the problem and leaves \a clusters empty. */
+  void
+  extract (std::vector<pcl::PointIndices>& clusters);
+
+  /** \brief The H0 diagram of the last extract(): one interval per component that
+   * merged before max distance (death: the merging edge's length, stepped if
+   * setFiltrationSteps() is set), one essential interval per component left at max
+   * distance; zero-length intervals (duplicate points) are left out. */
+  const PersistenceDiagram&
+  getPersistenceDiagram () const
+  {
+    return diagram_;
+  }
+
+  /** \brief The distance at which the last extract() cut the filtration: the max
+   * distance, or the one chosen by setAutoMaxDistance(true). */
+  double
+  getChosenDistance () const
+  {
+    return chosen_distance_;
+  }
+
+  /** \brief Number of components larger than the max cluster size in the last
+   * extract() (dropped or kept, see setKeepOversizedClusters()). */
+  std::size_t
+  getNumOversizedClusters () const
+  {
+    return num_oversized_clusters_;
+  }
+
+  /** \brief Number of edges of the radius graph of the last extract(). */
+  std::size_t
+  getNumEdges () const
+  {
+    return num_edges_;
+  }
+
+protected:
+  std::string
+  getClassName () const
+  {
+    return "PersistentEuclideanClusterExtraction";
+  }
+
+private:
+  /** PCL's k-d tree test (see setPCLDistanceTest()) on input points \a i, \a j. */
+  bool
+  passesPCLDistanceTest (pcl::index_t i, pcl::index_t j) const;
+
+  /** Builds the radius graph (or its spanning forest) of the finite indexed points;
+   * false after a PCL_ERROR. */
+  bool
+  buildGraph (FilteredComplex& complex);
+
+  /** Prints a PCL_ERROR for the first invalid parameter; true when all are valid. */
+  bool
+  checkParameters () const;
+
+  KdTreePtr tree_;
+  double max_distance_ = 0.0;
+  pcl::uindex_t min_pts_per_cluster_ = 1;
+  pcl::uindex_t max_pts_per_cluster_ = std::numeric_limits<pcl::uindex_t>::max();
+  bool keep_oversized_clusters_ = false;
+  bool pcl_distance_test_ = false;
+  unsigned int filtration_steps_ = 0;
+  bool auto_max_distance_ = false;
+  double gap_ratio_ = DEFAULT_GAP_RATIO;
+  unsigned int threads_ = 0;
+
+  PersistenceDiagram diagram_;
+  double chosen_distance_ = 0.0;
+  std::size_t num_oversized_clusters_ = 0;
+  std::size_t num_edges_ = 0;
+};
+
+} // namespace tda
+} // namespace pcl
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl/tda/segmentation/impl/persistent_euclidean_cluster_extraction.hpp>
+#endif
