@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include "test_data.h"
+#include "tool_runner.h"
 #include <unistd.h>
 
 #include <array>
@@ -20,30 +21,12 @@
 #include <sstream>
 
 using namespace pcl::tda;
+using pcl::tda::test::exists;
+using pcl::tda::test::run;
+using pcl::tda::test::RunResult;
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 
 namespace {
-
-struct RunResult {
-  int exit_code;
-  std::string output; // stdout and stderr
-};
-
-RunResult
-run (const std::string& command)
-{
-  RunResult result{-1, ""};
-  FILE* pipe = ::popen ((command + " 2>&1").c_str(), "r");
-  if (!pipe)
-    return result;
-  std::array<char, 4096> buffer;
-  std::size_t read;
-  while ((read = std::fread (buffer.data(), 1, buffer.size(), pipe)) > 0)
-    result.output.append (buffer.data(), read);
-  const int status = ::pclose (pipe);
-  result.exit_code = WIFEXITED (status) ? WEXITSTATUS (status) : -1;
-  return result;
-}
 
 std::string
 tool ()
@@ -54,15 +37,7 @@ tool ()
 std::string
 temporaryPath (const std::string& name)
 {
-  // Tests run in parallel: give each its own files.
-  return testing::TempDir() + "barcode_tool_" +
-         testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
-}
-
-bool
-exists (const std::string& path)
-{
-  return std::ifstream (path).good();
+  return pcl::tda::test::temporaryPath ("barcode_tool", name);
 }
 
 /** Ripser's diagram of the points of \a cloud (as loaded by PCL, written with

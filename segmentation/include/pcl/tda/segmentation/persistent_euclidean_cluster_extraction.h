@@ -134,7 +134,7 @@ public:
   using pcl::PCLBase<PointT>::deinitCompute;
 
   /** \brief Default of setAutoGapRatio(). */
-  static constexpr double DEFAULT_GAP_RATIO = 2.0;
+  static constexpr double DEFAULT_GAP_RATIO = 1.5;
 
   PersistentEuclideanClusterExtraction() = default;
 
