@@ -6,6 +6,7 @@
 #include <pcl/console/time.h>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/tda/apps/cloud_files.h>
+#include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/error_message.h>
@@ -120,22 +121,9 @@ parseOptions (int argc, char** argv, Options& options)
     print_error ("-leaf must be >= 0, not %g.\n", options.leaf);
     return false;
   }
-  for (const std::string& output :
-       {options.output, options.barcode_svg, options.diagram_svg, options.phat_matrix})
-    if (!output.empty() &&
-        (output == options.input || pcl::tda::isSameFile (output, options.input))) {
-      print_error ("Refusing to overwrite the input file %s.\n", options.input.c_str());
-      return false;
-    }
-  return true;
-}
-
-void
-printDone (const TicToc& timer, const std::string& what)
-{
-  print_info ("[done, ");
-  print_value ("%g", timer.toc());
-  print_info (" ms : %s]\n", what.c_str());
+  return !pcl::tda::overwritesInput (
+      options.input,
+      {options.output, options.barcode_svg, options.diagram_svg, options.phat_matrix});
 }
 
 int
@@ -166,7 +154,7 @@ run (const Options& options)
     cloud = filtered;
   }
   seconds.load = timer.toc() / 1000.0;
-  printDone (timer, std::to_string (cloud->size()) + " points");
+  pcl::tda::printDone (timer, std::to_string (cloud->size()) + " points");
 
   timer.tic();
   print_highlight ("Building the Vietoris-Rips complex of radius ");
@@ -181,17 +169,17 @@ run (const Options& options)
   if (!builder.compute (complex))
     return 1;
   seconds.build = timer.toc() / 1000.0;
-  printDone (timer,
-             std::to_string (complex.numVertices()) + " points, " +
-                 std::to_string (complex.numEdges()) + " edges, " +
-                 std::to_string (complex.numTriangles()) + " triangles");
+  pcl::tda::printDone (timer,
+                       std::to_string (complex.numVertices()) + " points, " +
+                           std::to_string (complex.numEdges()) + " edges, " +
+                           std::to_string (complex.numTriangles()) + " triangles");
 
   timer.tic();
   print_highlight ("Computing H0 ");
   pcl::tda::PersistenceResult result = pcl::tda::computeH0Persistence (complex);
   const std::size_t h0_intervals = result.diagram (0).size();
   seconds.h0 = timer.toc() / 1000.0;
-  printDone (timer, std::to_string (h0_intervals) + " intervals");
+  pcl::tda::printDone (timer, std::to_string (h0_intervals) + " intervals");
 
   if (options.dimension == 1) {
     timer.tic();
@@ -210,7 +198,7 @@ run (const Options& options)
   const pcl::tda::PersistenceDiagram diagram = result.diagram (options.dimension);
   const std::size_t h1_intervals = diagram.size() - h0_intervals;
   if (options.dimension == 1)
-    printDone (timer, std::to_string (h1_intervals) + " intervals");
+    pcl::tda::printDone (timer, std::to_string (h1_intervals) + " intervals");
 
   timer.tic();
   print_highlight ("Saving ");
@@ -241,7 +229,7 @@ run (const Options& options)
     return 1;
   }
   seconds.write = timer.toc() / 1000.0;
-  printDone (timer, std::to_string (diagram.size()) + " intervals");
+  pcl::tda::printDone (timer, std::to_string (diagram.size()) + " intervals");
   for (const std::string& picture :
        {options.barcode_svg, options.diagram_svg, options.phat_matrix})
     if (!picture.empty()) {

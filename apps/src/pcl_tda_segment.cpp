@@ -8,6 +8,7 @@
 #include <pcl/console/time.h>
 #include <pcl/tda/apps/cloud_files.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/persistence_plots.h>
@@ -100,21 +101,8 @@ parseOptions (int argc, char** argv, Options& options)
         "Need 1 <= -min <= -max, not %d and %d.\n", options.min_size, options.max_size);
     return false;
   }
-  for (const std::string& output : {options.output, options.barcode_svg})
-    if (!output.empty() &&
-        (output == options.input || pcl::tda::isSameFile (output, options.input))) {
-      print_error ("Refusing to overwrite the input file %s.\n", options.input.c_str());
-      return false;
-    }
-  return true;
-}
-
-void
-printDone (const TicToc& timer, const std::string& what)
-{
-  print_info ("[done, ");
-  print_value ("%g", timer.toc());
-  print_info (" ms : %s]\n", what.c_str());
+  return !pcl::tda::overwritesInput (options.input,
+                                     {options.output, options.barcode_svg});
 }
 
 /** A colour per label: grey for 0, then well-separated hues. */
@@ -154,9 +142,9 @@ run (const Options& options)
                  pcl::tda::errorMessage (error).c_str());
     return 1;
   }
-  printDone (timer,
-             std::to_string (cloud->size()) + " points" +
-                 (cloud->isOrganized() ? " (organized)" : ""));
+  pcl::tda::printDone (timer,
+                       std::to_string (cloud->size()) + " points" +
+                           (cloud->isOrganized() ? " (organized)" : ""));
 
   timer.tic();
   print_highlight ("Preprocessing ");
@@ -175,7 +163,7 @@ run (const Options& options)
   preprocessed << points->size() << " points; removed " << counts.non_finite
                << " non-finite, " << counts.beyond_depth << " beyond range, "
                << counts.plane << " on the plane";
-  printDone (timer, preprocessed.str());
+  pcl::tda::printDone (timer, preprocessed.str());
 
   timer.tic();
   print_highlight ("Clustering ");
@@ -195,7 +183,7 @@ run (const Options& options)
   clustered << clusters.size() << " clusters at distance "
             << extraction.getChosenDistance() << (options.automatic ? " (chosen)" : "")
             << ", " << extraction.getNumEdges() << " edges";
-  printDone (timer, clustered.str());
+  pcl::tda::printDone (timer, clustered.str());
 
   pcl::PointCloud<pcl::PointXYZRGBL> labelled;
   pcl::copyPointCloud (*points, labelled);
@@ -243,7 +231,7 @@ run (const Options& options)
     print_error ("\n%s\n", pcl::tda::errorMessage (error).c_str());
     return 1;
   }
-  printDone (timer, std::to_string (labelled.size()) + " labelled points");
+  pcl::tda::printDone (timer, std::to_string (labelled.size()) + " labelled points");
   return 0;
 }
 

@@ -94,11 +94,7 @@ void
 addFastIncrementalH1Persistence (const FilteredComplex& complex,
                                  PersistenceResult& result)
 {
-  FastIncrementalCycleTable table (complex, result.positive_edges);
-  std::vector<SimplexIndex> killed_edge (complex.numTriangles());
-  for (SimplexIndex t = 0; t < complex.numTriangles(); ++t)
-    killed_edge[t] = table.addTriangle (t);
-  addTriangleDeaths (complex, killed_edge, result);
+  addH1ByCycleTable<FastIncrementalCycleTable> (complex, result);
 }
 
 } // namespace tda

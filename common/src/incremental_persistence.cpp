@@ -32,11 +32,7 @@ IncrementalCycleTable::addTriangle (SimplexIndex triangle)
 void
 addIncrementalH1Persistence (const FilteredComplex& complex, PersistenceResult& result)
 {
-  IncrementalCycleTable table (complex, result.positive_edges);
-  std::vector<SimplexIndex> killed_edge (complex.numTriangles());
-  for (SimplexIndex t = 0; t < complex.numTriangles(); ++t)
-    killed_edge[t] = table.addTriangle (t);
-  addTriangleDeaths (complex, killed_edge, result);
+  addH1ByCycleTable<IncrementalCycleTable> (complex, result);
 }
 
 } // namespace tda

@@ -1,7 +1,7 @@
+#include <pcl/tda/common/cycle_set.h>
 #include <pcl/tda/common/standard_reduction.h>
 
 #include <algorithm>
-#include <iterator>
 #include <limits>
 
 namespace pcl {
@@ -9,21 +9,9 @@ namespace tda {
 
 namespace {
 
-using Column = std::vector<std::uint32_t>;
+/** A column of the boundary matrix: the sorted global positions of its faces. */
+using Column = CycleSet;
 constexpr std::uint32_t NO_COLUMN = std::numeric_limits<std::uint32_t>::max();
-
-/** Adds (over Z2) the sorted column \a addend to the sorted column \a target. */
-void
-addColumn (Column& target, const Column& addend, Column& buffer)
-{
-  buffer.clear();
-  std::set_symmetric_difference (target.begin(),
-                                 target.end(),
-                                 addend.begin(),
-                                 addend.end(),
-                                 std::back_inserter (buffer));
-  target.swap (buffer);
-}
 
 } // namespace
 
@@ -59,7 +47,7 @@ computeStandardReduction (const FilteredComplex& complex,
       column = {edge_position[ids[2]], edge_position[ids[1]], edge_position[ids[0]]};
     }
     while (!column.empty() && pivot_owner[column.back()] != NO_COLUMN)
-      addColumn (column, reduced[pivot_owner[column.back()]], buffer);
+      addCycle (column, reduced[pivot_owner[column.back()]], buffer);
 
     if (column.empty()) {
       if (simplex.dimension == 1)

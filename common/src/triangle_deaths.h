@@ -19,6 +19,21 @@ addTriangleDeaths (const FilteredComplex& complex,
                    const std::vector<SimplexIndex>& killed_edge,
                    PersistenceResult& result);
 
+/** \brief Completes \a result (H0 pairs and edge marks) by adding every triangle, in
+ * filtration order, to a cycle table of the incremental engines (Alg 5.11 or
+ * 5.12): \a Table is constructed from the complex and the edge marks and has
+ * addTriangle(t) returning the edge t kills. */
+template <typename Table>
+void
+addH1ByCycleTable (const FilteredComplex& complex, PersistenceResult& result)
+{
+  Table table (complex, result.positive_edges);
+  std::vector<SimplexIndex> killed_edge (complex.numTriangles());
+  for (SimplexIndex t = 0; t < complex.numTriangles(); ++t)
+    killed_edge[t] = table.addTriangle (t);
+  addTriangleDeaths (complex, killed_edge, result);
+}
+
 /** \brief The positive edges of the boundary of \a triangle, in increasing order:
  * the set Lambda of thesis Alg 5.10-5.13. */
 CycleSet

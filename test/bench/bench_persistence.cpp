@@ -61,6 +61,8 @@
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 using Clock = std::chrono::steady_clock;
 
+#include "common/test_utils.h"
+
 namespace {
 
 const std::vector<std::string> PHAT_REDUCTIONS = {
@@ -447,27 +449,6 @@ measureOurs (const Cloud::ConstPtr& cloud, double radius, int runs)
   ours.h0 = summarize (h0);
   ours.h1 = summarize (h1);
   return ours;
-}
-
-/** Non-essential pairs as (birth, death) positions in the global filtration. */
-std::vector<std::pair<std::int64_t, std::int64_t>>
-globalPairs (const pcl::tda::FilteredComplex& complex,
-             const pcl::tda::PersistenceResult& result)
-{
-  const auto order = complex.filtrationOrder();
-  std::vector<std::int64_t> position[3];
-  position[0].resize (complex.numVertices());
-  position[1].resize (complex.numEdges());
-  position[2].resize (complex.numTriangles());
-  for (std::size_t g = 0; g < order.size(); ++g)
-    position[order[g].dimension][order[g].index] = static_cast<std::int64_t> (g);
-  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
-  for (const auto& pair : result.pairs)
-    if (!pair.isEssential())
-      pairs.emplace_back (position[pair.dimension][pair.birth_simplex],
-                          position[pair.dimension + 1][pair.death_simplex]);
-  std::sort (pairs.begin(), pairs.end());
-  return pairs;
 }
 
 // ---------------------------------------------------------------------------------
@@ -1276,7 +1257,7 @@ benchmark (const Options& options, const std::string& self)
   if (std::any_of (PHAT_REDUCTIONS.begin(),
                    PHAT_REDUCTIONS.end(),
                    [&] (const std::string& name) { return wants ("phat-" + name); })) {
-    const auto pairs = globalPairs (complex, ours.result);
+    const auto pairs = pcl::tda::test::globalPairs (complex, ours.result);
     if (wants ("phat-standard"))
       results.phat.push_back (
           measurePHAT<phat::standard_reduction> ("standard", ours, pairs, runs));
