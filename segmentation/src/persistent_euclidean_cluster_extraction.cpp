@@ -9,7 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <limits>
 #include <tuple>
+#include <utility>
 
 namespace pcl {
 namespace tda {
@@ -118,8 +121,10 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
     for (std::int64_t dy = -1; dy <= 1; ++dy)
       for (std::int64_t dz = -1; dz <= 1; ++dz)
         if (std::make_tuple (dx, dy, dz) > std::make_tuple (0, 0, 0))
-          forward_offsets.push_back (static_cast<std::uint64_t> (
-              (dx << 42) + (dy << 21) + dz)); // two's complement wraps correctly
+          forward_offsets.push_back ( // unsigned arithmetic wraps as intended
+              (static_cast<std::uint64_t> (dx) << 42) +
+              (static_cast<std::uint64_t> (dy) << 21) +
+              static_cast<std::uint64_t> (dz));
 
   const double squared_radius = radius * radius;
   const auto num_cells = static_cast<std::int64_t> (cell_keys.size());
@@ -248,36 +253,127 @@ chooseClusterDistance (const FilteredComplex& complex,
                        std::size_t min_cluster_size,
                        double gap_ratio)
 {
+  // Bars of the significant components: a component is born (as a would-be
+  // cluster) when it first has significant_size points, and dies when it merges
+  // with an older one (the elder rule on these births).
+  struct Bar {
+    double birth;
+    double death;
+  };
   const std::size_t significant_size = std::max<std::size_t> (min_cluster_size, 2);
-  UnionFind components (complex.numVertices());
-  std::vector<double> deaths, significant_deaths;
-  // The finite pairs are in edge order: replaying them gives the component sizes at
-  // each merge.
+  const std::size_t num_vertices = complex.numVertices();
+  constexpr double NOT_SIGNIFICANT = -1.0;
+  UnionFind components (num_vertices);
+  std::vector<double> significant_birth (num_vertices, NOT_SIGNIFICANT);
+  std::vector<Bar> bars;
+  std::vector<std::pair<double, int>> events; // (scale, +1 birth or -1 death)
+  double smallest_death = std::numeric_limits<double>::infinity();
+  // The finite pairs are in edge order: replaying them gives the components.
   for (const PersistencePair& pair : h0.pairs) {
     if (pair.dimension != 0 || pair.isEssential())
       continue;
     const FilteredEdge& edge = complex.edges()[pair.death_simplex];
     const SimplexIndex a = components.find (edge.source);
     const SimplexIndex b = components.find (edge.target);
-    if (std::min (components.setSize (a), components.setSize (b)) >= significant_size)
-      significant_deaths.push_back (pair.death);
-    components.linkRoots (a, b);
+    const double birth_a = significant_birth[a], birth_b = significant_birth[b];
+    const SimplexIndex root = components.linkRoots (a, b);
     if (pair.death > 0.0)
-      deaths.push_back (pair.death);
+      smallest_death = std::min (smallest_death, pair.death);
+    if (birth_a >= 0.0 && birth_b >= 0.0) {
+      bars.push_back ({std::max (birth_a, birth_b), pair.death});
+      events.emplace_back (pair.death, -1);
+      significant_birth[root] = std::min (birth_a, birth_b);
+    }
+    else if (birth_a >= 0.0 || birth_b >= 0.0)
+      significant_birth[root] = std::max (birth_a, birth_b);
+    else if (components.setSize (root) >= significant_size) {
+      significant_birth[root] = pair.death;
+      events.emplace_back (pair.death, +1);
+    }
   }
-  if (deaths.empty())
-    return max_distance;
-  auto median = deaths.begin() + deaths.size() / 2;
-  std::nth_element (deaths.begin(), median, deaths.end());
-  std::sort (significant_deaths.begin(), significant_deaths.end());
+  std::size_t eldest = bars.size();
+  for (SimplexIndex v = 0; v < num_vertices; ++v)
+    if (components.find (v) == v && significant_birth[v] >= 0.0) {
+      if (eldest == bars.size() || significant_birth[v] < bars[eldest].birth)
+        eldest = bars.size();
+      bars.push_back ({significant_birth[v], max_distance});
+    }
+  if (eldest == bars.size() || !std::isfinite (smallest_death))
+    return max_distance; // no component of significant size, or no positive scale
 
-  double lower = *median;
-  for (const double death : significant_deaths) {
-    if (death >= gap_ratio * lower)
-      return std::sqrt (lower * death);
-    lower = std::max (lower, death);
+  // Dense bars are born within gap_ratio of the eldest's birth, i.e. at the
+  // sampling scale; sparse ones later (e.g. remnants of a removed plane).
+  const double densest_birth = std::max (bars[eldest].birth, smallest_death);
+  const auto dense = [&] (const Bar& bar) {
+    return bar.birth <= gap_ratio * densest_birth;
+  };
+  const auto lifetime = [&] (const Bar& bar) {
+    return std::log (bar.death / std::max (bar.birth, smallest_death));
+  };
+  // The clusters: the eldest bar, plus the dense bars above the largest gap in the
+  // log-lifetimes of the others (a virtual bar of lifetime 0 below them), among
+  // those that live at least gap_ratio times their birth.
+  std::vector<std::size_t> others;
+  for (std::size_t k = 0; k < bars.size(); ++k)
+    if (k != eldest && dense (bars[k]))
+      others.push_back (k);
+  std::stable_sort (others.begin(), others.end(), [&] (std::size_t a, std::size_t b) {
+    return lifetime (bars[a]) > lifetime (bars[b]);
+  });
+  std::size_t num_longer = 0;
+  double largest_gap = -1.0;
+  for (std::size_t k = 0;
+       k < others.size() && lifetime (bars[others[k]]) >= std::log (gap_ratio);
+       ++k) {
+    const double next = k + 1 < others.size() ? lifetime (bars[others[k + 1]]) : 0.0;
+    if (lifetime (bars[others[k]]) - next > largest_gap) {
+      largest_gap = lifetime (bars[others[k]]) - next;
+      num_longer = k + 1;
+    }
   }
-  return max_distance;
+  const std::size_t num_clusters = num_longer + 1;
+
+  // The window of scales where these clusters all exist and no sparse component
+  // has merged yet.
+  double window_low = densest_birth, window_high = max_distance;
+  for (std::size_t k = 0; k < num_longer; ++k) {
+    window_low = std::max (window_low, bars[others[k]].birth);
+    window_high = std::min (window_high, bars[others[k]].death);
+  }
+  for (const Bar& bar : bars)
+    if (!dense (bar))
+      window_high = std::min (window_high, bar.death);
+  if (!(window_high > window_low)) {
+    window_low = smallest_death;
+    window_high = max_distance;
+  }
+
+  // The distance: the geometric middle of the longest (relative) interval of the
+  // window over which exactly k significant components exist (or, without one, the
+  // count nearest k).
+  std::stable_sort (events.begin(), events.end(), [] (const auto& a, const auto& b) {
+    return a.first < b.first;
+  });
+  std::size_t count = 0;
+  double best_length = -1.0, chosen = max_distance;
+  std::size_t best_miss = std::numeric_limits<std::size_t>::max();
+  for (std::size_t e = 0; e < events.size(); ++e) {
+    count += events[e].second; // -1 wraps to a decrement
+    const double low = std::max (events[e].first, window_low);
+    const double high = std::min (
+        e + 1 < events.size() ? events[e + 1].first : max_distance, window_high);
+    if (!(high > low))
+      continue;
+    const std::size_t miss =
+        count > num_clusters ? count - num_clusters : num_clusters - count;
+    const double length = std::log (high / low);
+    if (miss < best_miss || (miss == best_miss && length > best_length)) {
+      best_miss = miss;
+      best_length = length;
+      chosen = std::sqrt (low * high);
+    }
+  }
+  return std::min (chosen, max_distance);
 }
 
 } // namespace tda

@@ -17,9 +17,11 @@
 #include "test_data.h"
 
 #include <cmath>
+#include <iostream>
 #include <limits>
 #include <numeric>
 #include <random>
+#include <set>
 
 using namespace pcl::tda;
 using pcl::tda::test::pclEuclideanClusters;
@@ -469,4 +471,119 @@ TEST (PersistentEuclideanClusterExtraction, RefusesBadInputWithClearErrors)
   std::vector<pcl::PointIndices> clusters;
   min_above_max.extract (clusters);
   EXPECT_EQ (clusters.size(), 1u);
+}
+
+namespace {
+
+/** Generated scenes with the table removed by RANSAC (1 cm), across 6 noise levels,
+ * 2 dropouts and 10 seeds, with 1 to 6 objects: 120 scenes. With noise 0.004 and
+ * above, RANSAC leaves hundreds of sparse table points that bridge the objects at
+ * 2-4 cm. \a min_gap: the generator's smallest gap between objects. */
+struct AutoScaleScene {
+  LabelledCloud::Ptr cloud;
+  std::string name;
+};
+
+std::vector<AutoScaleScene>
+autoScaleScenes (std::uint64_t first_seed, float min_gap)
+{
+  std::vector<AutoScaleScene> scenes;
+  for (const float noise : {0.001f, 0.002f, 0.003f, 0.004f, 0.005f, 0.006f})
+    for (const float dropout : {0.0f, 0.25f})
+      for (std::uint64_t seed = first_seed; seed < first_seed + 10; ++seed) {
+        TabletopParameters parameters = sceneParameters (seed, noise, dropout);
+        parameters.num_objects = 1 + seed % 6;
+        parameters.min_gap = min_gap;
+        scenes.push_back ({sceneObjects (parameters),
+                           "seed " + std::to_string (seed) + " noise " +
+                               std::to_string (noise) + " dropout " +
+                               std::to_string (dropout) + " min gap " +
+                               std::to_string (min_gap)});
+      }
+  return scenes;
+}
+
+} // namespace
+
+/** Runs the automatic distance on \a scene; true when it gives one cluster per
+ * ground-truth object, each matched with IoU >= 0.5. */
+bool
+autoDistanceRecovers (const LabelledCloud& scene, const std::string& name)
+{
+  const std::vector<std::uint32_t> labels = labelsOf (scene);
+  std::set<std::uint32_t> objects (labels.begin(), labels.end());
+  objects.erase (TABLE_LABEL);
+  Extraction extraction;
+  extraction.setAutoMaxDistance (true);
+  const auto clusters = ourClusters (xyzOf (scene), 0.1, 32, 1000000, &extraction);
+  EXPECT_GT (extraction.getChosenDistance(), 0.0) << name;
+  EXPECT_LE (extraction.getChosenDistance(), 0.1) << name;
+  const auto scores =
+      pcl::tda::test::scoreObjects (labels, clusters, FIRST_OBJECT_LABEL);
+  const bool recovered =
+      clusters.size() == objects.size() && scores.matched == objects.size();
+  if (!recovered)
+    std::cout << name << ": " << objects.size() << " objects, " << clusters.size()
+              << " clusters, " << scores.matched << " matched, chosen distance "
+              << extraction.getChosenDistance() << std::endl;
+  return recovered;
+}
+
+TEST (PersistentEuclideanClusterExtraction, AutoDistanceRecoversObjectCount)
+{
+  // The 18 scenes of the first rule's report (3 to 6 objects): all recovered.
+  for (const float noise : {0.001f, 0.003f, 0.006f})
+    for (const float dropout : {0.0f, 0.25f})
+      for (std::uint64_t seed = 11; seed <= 13; ++seed)
+        EXPECT_TRUE (autoDistanceRecovers (
+            *sceneObjects (sceneParameters (seed, noise, dropout)),
+            "seed " + std::to_string (seed) + " noise " + std::to_string (noise) +
+                " dropout " + std::to_string (dropout)));
+
+  // 240 scenes, 1 to 6 objects, 6 noise levels, two object gaps. Known limit: in
+  // one (seed 16, noise 0.006, dropout 0.25, gap 5 cm) a far, noisy object is born
+  // as late and lives as long, relative to its birth, as a clump of table remnants;
+  // H0 alone cannot tell them apart and the object is taken for clutter.
+  std::size_t recovered = 0, total = 0;
+  for (const auto& [first_seed, min_gap] : {std::make_pair (std::uint64_t{11}, 0.05f),
+                                            std::make_pair (std::uint64_t{101}, 0.04f)})
+    for (const auto& [scene, name] : autoScaleScenes (first_seed, min_gap)) {
+      recovered += autoDistanceRecovers (*scene, name);
+      ++total;
+    }
+  EXPECT_EQ (total, 240u);
+  EXPECT_GE (recovered, 239u);
+}
+
+TEST (PersistentEuclideanClusterExtraction, AutoDistanceF1AtLeastBestECETolerance)
+{
+  const std::vector<AutoScaleScene> scenes = autoScaleScenes (11, 0.05f);
+  pcl::tda::test::ObjectScores automatic;
+  std::vector<pcl::tda::test::ObjectScores> sweep (19);
+  for (const auto& [scene, name] : scenes) {
+    const Cloud::Ptr cloud = xyzOf (*scene);
+    const std::vector<std::uint32_t> labels = labelsOf (*scene);
+    Extraction extraction;
+    extraction.setAutoMaxDistance (true);
+    automatic.add (pcl::tda::test::scoreObjects (
+        labels,
+        ourClusters (cloud, 0.1, 32, 1000000, &extraction),
+        FIRST_OBJECT_LABEL));
+    for (std::size_t k = 0; k < sweep.size(); ++k) // 0.01 to 0.1 by 0.005
+      sweep[k].add (pcl::tda::test::scoreObjects (
+          labels,
+          pclEuclideanClusters<pcl::PointXYZ> (cloud, 0.01 + 0.005 * k, 32),
+          FIRST_OBJECT_LABEL));
+  }
+  double best = 0.0;
+  for (const auto& scores : sweep)
+    best = std::max (best, scores.f1());
+  std::cout << "object-level F1: automatic " << automatic.f1()
+            << ", best ECE tolerance " << best << std::endl;
+  EXPECT_GE (automatic.f1(), best);
+  EXPECT_GT (automatic.f1(), 0.98);
+  // No tolerance of the sweep is perfect on all scenes, and its extremes are worse.
+  EXPECT_LT (best, 1.0);
+  EXPECT_LT (sweep.back().f1(), best);
+  EXPECT_LT (sweep.front().f1(), best);
 }

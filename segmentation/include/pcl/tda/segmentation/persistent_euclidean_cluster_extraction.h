@@ -64,15 +64,16 @@ PersistenceDiagram
 steppedH0Diagram (const PersistenceResult& h0, double max_distance, unsigned int steps);
 
 /** \brief The automatic cluster distance (see
- * PersistentEuclideanClusterExtraction::setAutoMaxDistance()) from the H0
- * persistence of a complex built up to \a max_distance.
+ * PersistentEuclideanClusterExtraction::setAutoMaxDistance(), which states the rule)
+ * from the H0 persistence of a complex built up to \a max_distance.
  * \param[in] complex the complex
  * \param[in] h0 the result of computeH0Persistence() on \a complex
  * \param[in] max_distance the end of the filtration
- * \param[in] min_cluster_size merges of two components of at least this many points
- * (and at least 2) are the significant ones
- * \param[in] gap_ratio a gap counts when its upper end is at least this many times
- * its lower end (> 1)
+ * \param[in] min_cluster_size components of at least this many points (and at
+ * least 2) are the significant ones
+ * \param[in] gap_ratio the ratio (> 1) that makes a component dense (born within
+ * this factor of the eldest's birth) and long-lived (dies at least this factor
+ * after its birth)
  * \return a distance in (0, max_distance] */
 double
 chooseClusterDistance (const FilteredComplex& complex,
@@ -246,18 +247,27 @@ public:
   }
 
   /** \brief Lets extract() choose the cluster distance from the H0 diagram of the
-   * filtration up to max distance (default false).
+   * filtration up to max distance (default false). The rule, a persistence rule on
+   * the would-be clusters (thesis Sec 4.1.4-4.1.5), with ratio q = the gap ratio:
    *
-   * The rule: the significant merges are those of two components of at least
-   * max(min cluster size, 2) points each, i.e. of two would-be clusters; the scale
-   * of the sampling is the median death. Going up from that median through the
-   * deaths of the significant merges, the first gap whose upper end is at least
-   * the gap ratio times its lower end separates the merges inside objects from
-   * those between objects, and the distance chosen is the geometric middle of that
-   * gap. Without such a gap, every merge up to max distance is taken to be inside
-   * an object and the distance is max distance. Max distance should then be a
-   * generous upper bound, e.g. a few times the point spacing more than the gap
-   * expected between objects. */
+   * 1. Significant bars. A component is born as a would-be cluster at the scale at
+   *    which it first has max(min cluster size, 2) points, and dies when it merges
+   *    with an older one (the elder rule on these births); the eldest lives to max
+   *    distance. A bar is dense when born at most q times later than the eldest,
+   *    i.e. at the sampling scale; sparse bars (born later: clutter, remnants of a
+   *    removed plane) are never clusters.
+   * 2. The number of clusters k. The other dense bars are sorted by log-lifetime
+   *    log(death / birth), a virtual bar of lifetime 0 is put below them, and k is
+   *    1 (the eldest) plus the number of bars above the largest gap among the bars
+   *    that live at least q times their birth (k = 1 when none does).
+   * 3. The distance. Within the window where those k bars all exist and no sparse
+   *    bar has died yet, the longest interval (by ratio of its ends) over which
+   *    exactly k significant components exist (or, without one, the count nearest
+   *    k) is taken, and the distance is its geometric middle.
+   *
+   * The relative (scale-free) lifetimes make the rule independent of the units and
+   * of the point spacing. Max distance bounds the search and should be a generous
+   * upper bound, e.g. twice the gap expected between objects. */
   void
   setAutoMaxDistance (bool enabled)
   {
@@ -270,8 +280,9 @@ public:
     return auto_max_distance_;
   }
 
-  /** \brief Sets how much larger the upper end of a gap must be than its lower end
-   * for setAutoMaxDistance() to cut there (> 1, default DEFAULT_GAP_RATIO). */
+  /** \brief Sets the ratio q (> 1, default DEFAULT_GAP_RATIO) of the rule of
+   * setAutoMaxDistance(): a would-be cluster must be born within q times the
+   * eldest's birth and live at least q times its birth. */
   void
   setAutoGapRatio (double ratio)
   {
