@@ -131,17 +131,9 @@ run (const Options& options)
 {
   TicToc timer;
   timer.tic();
-  print_highlight ("Loading ");
-  print_value ("%s ", options.input.c_str());
   Cloud::Ptr cloud (new Cloud);
-  try {
-    pcl::tda::loadPointCloudFile (options.input, *cloud);
-  }
-  catch (const pcl::PCLException& error) {
-    print_error ("\nCannot read the PCD file: %s\n",
-                 pcl::tda::errorMessage (error).c_str());
+  if (!pcl::tda::loadToolInput (options.input, *cloud))
     return 1;
-  }
   pcl::tda::printDone (timer,
                        std::to_string (cloud->size()) + " points" +
                            (cloud->isOrganized() ? " (organized)" : ""));

@@ -36,6 +36,19 @@ expectSameResult (const FilteredComplex& complex,
       << what;
 }
 
+/** Every engine's result on \a complex equals the standard reduction's. */
+void
+expectAllEnginesEqualStandard (const FilteredComplex& complex, const std::string& what)
+{
+  const PersistenceResult oracle =
+      computePersistence (complex, PersistenceEngine::STANDARD);
+  for (const PersistenceEngine engine : allEngines())
+    expectSameResult (complex,
+                      oracle,
+                      computePersistence (complex, engine),
+                      engineName (engine) + what);
+}
+
 } // namespace
 
 // Every engine pairs exactly the simplices the standard reduction pairs, on random
@@ -43,14 +56,8 @@ expectSameResult (const FilteredComplex& complex,
 TEST (PersistenceEngines, EqualStandardReductionOnRandomComplexes)
 {
   for (unsigned int k = 0; k < test::RANDOM_CASES; ++k) {
-    const FilteredComplex complex = test::randomComplexCase (k);
-    const PersistenceResult oracle =
-        computePersistence (complex, PersistenceEngine::STANDARD);
-    for (const PersistenceEngine engine : allEngines())
-      expectSameResult (complex,
-                        oracle,
-                        computePersistence (complex, engine),
-                        engineName (engine) + " case " + std::to_string (k));
+    expectAllEnginesEqualStandard (test::randomComplexCase (k),
+                                   " case " + std::to_string (k));
   }
 }
 
@@ -59,14 +66,8 @@ TEST (PersistenceEngines, EqualStandardReductionOnLargerRandomComplexes)
 {
   std::mt19937 random (99);
   for (unsigned int k = 0; k < 60; ++k) {
-    const FilteredComplex complex = test::randomComplex (random, k % 2 == 0, true, 60);
-    const PersistenceResult oracle =
-        computePersistence (complex, PersistenceEngine::STANDARD);
-    for (const PersistenceEngine engine : allEngines())
-      expectSameResult (complex,
-                        oracle,
-                        computePersistence (complex, engine),
-                        engineName (engine) + " case " + std::to_string (k));
+    expectAllEnginesEqualStandard (test::randomComplex (random, k % 2 == 0, true, 60),
+                                   " large case " + std::to_string (k));
   }
 }
 
