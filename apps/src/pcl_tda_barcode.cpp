@@ -4,8 +4,8 @@
 #include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
-#include <pcl/filters/voxel_grid.h>
 #include <pcl/tda/apps/cloud_files.h>
+#include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/diagram_io.h>
@@ -138,12 +138,7 @@ run (const Options& options)
   if (!pcl::tda::loadToolInput (options.input, *cloud))
     return 1;
   if (options.leaf > 0.0) {
-    pcl::VoxelGrid<pcl::PointXYZ> grid;
-    grid.setInputCloud (cloud);
-    grid.setLeafSize (options.leaf, options.leaf, options.leaf);
-    Cloud::Ptr filtered (new Cloud);
-    grid.filter (*filtered);
-    cloud = filtered;
+    cloud = pcl::tda::voxelGridFilter<pcl::PointXYZ> (cloud, options.leaf);
   }
   seconds.load = timer.toc() / 1000.0;
   pcl::tda::printDone (timer, std::to_string (cloud->size()) + " points");

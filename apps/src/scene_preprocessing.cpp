@@ -78,13 +78,7 @@ preprocessScene (const pcl::PointCloud<PointT>& cloud,
   }
 
   if (options.leaf > 0.0) {
-    pcl::VoxelGrid<PointT> grid;
-    grid.setInputCloud (result);
-    const auto leaf = static_cast<float> (options.leaf);
-    grid.setLeafSize (leaf, leaf, leaf);
-    typename Cloud::Ptr filtered (new Cloud);
-    grid.filter (*filtered);
-    result = filtered;
+    result = voxelGridFilter<PointT> (result, options.leaf);
     requirePoints (*result, "after the voxel grid (is the leaf too small?)");
   }
   removed.after_voxel_grid = result->size();
@@ -93,6 +87,25 @@ preprocessScene (const pcl::PointCloud<PointT>& cloud,
   return result;
 }
 
+template <typename PointT>
+typename pcl::PointCloud<PointT>::Ptr
+voxelGridFilter (const typename pcl::PointCloud<PointT>::ConstPtr& cloud, double leaf)
+{
+  pcl::VoxelGrid<PointT> grid;
+  grid.setInputCloud (cloud);
+  const auto size = static_cast<float> (leaf);
+  grid.setLeafSize (size, size, size);
+  typename pcl::PointCloud<PointT>::Ptr filtered (new pcl::PointCloud<PointT>);
+  grid.filter (*filtered);
+  return filtered;
+}
+
+template pcl::PointCloud<pcl::PointXYZ>::Ptr
+voxelGridFilter<pcl::PointXYZ> (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr&,
+                                double);
+template pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
+voxelGridFilter<pcl::PointXYZRGBL> (const pcl::PointCloud<pcl::PointXYZRGBL>::ConstPtr&,
+                                    double);
 template pcl::PointCloud<pcl::PointXYZ>::Ptr
 preprocessScene (const pcl::PointCloud<pcl::PointXYZ>&,
                  const ScenePreprocessing&,

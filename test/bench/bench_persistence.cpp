@@ -12,8 +12,8 @@
 #include <pcl/common/common.h>
 #include <pcl/console/parse.h>
 #include <pcl/filters/filter.h>
-#include <pcl/filters/voxel_grid.h>
 #include <pcl/io/pcd_io.h>
+#include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/common/diagram_comparison.h>
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/error_message.h>
@@ -327,12 +327,7 @@ loadPoints (const Options& options, std::size_t& loaded)
   pcl::Indices finite;
   pcl::removeNaNFromPointCloud (*cloud, *cloud, finite);
   if (options.leaf > 0.0) {
-    pcl::VoxelGrid<pcl::PointXYZ> grid;
-    grid.setInputCloud (cloud);
-    grid.setLeafSize (options.leaf, options.leaf, options.leaf);
-    Cloud::Ptr filtered (new Cloud);
-    grid.filter (*filtered);
-    cloud = filtered;
+    cloud = pcl::tda::voxelGridFilter<pcl::PointXYZ> (cloud, options.leaf);
   }
   if (cloud->empty())
     throw std::runtime_error ("no finite point in " + options.input);
