@@ -164,7 +164,7 @@ run (const Options& options)
   timer.tic();
   print_highlight ("Computing H0 ");
   pcl::tda::PersistenceResult result = pcl::tda::computeH0Persistence (complex);
-  const std::size_t h0_intervals = result.diagram (0).size();
+  const std::size_t h0_intervals = result.diagram (complex, 0).size();
   seconds.h0 = timer.toc() / 1000.0;
   pcl::tda::printDone (timer, std::to_string (h0_intervals) + " intervals");
 
@@ -182,7 +182,8 @@ run (const Options& options)
     progress.finish();
     seconds.h1 = timer.toc() / 1000.0;
   }
-  const pcl::tda::PersistenceDiagram diagram = result.diagram (options.dimension);
+  const pcl::tda::PersistenceDiagram diagram =
+      result.diagram (complex, options.dimension);
   const std::size_t h1_intervals = diagram.size() - h0_intervals;
   if (options.dimension == 1)
     pcl::tda::printDone (timer, std::to_string (h1_intervals) + " intervals");

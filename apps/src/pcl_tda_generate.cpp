@@ -6,8 +6,9 @@
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
 #include <pcl/tda/apps/cloud_files.h>
-#include <pcl/tda/apps/synthetic_scenes.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/generators/shapes.h>
+#include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/exceptions.h>
 
 #include <cmath>

@@ -9,14 +9,15 @@ namespace {
 void
 checkMarks (const FilteredComplex& complex, const PersistenceResult& result)
 {
-  if (result.positive_edges.size() != complex.numEdges() ||
-      result.positive_triangles.size() != complex.numTriangles())
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         "the persistence result marks "
-                             << result.positive_edges.size() << " edges and "
-                             << result.positive_triangles.size()
-                             << " triangles, the complex has " << complex.numEdges()
-                             << " and " << complex.numTriangles());
+  if (result.max_dimension < 1 || result.edge_positive.size() != complex.numEdges() ||
+      result.triangle_positive.size() != complex.numTriangles())
+    PCL_THROW_EXCEPTION (
+        pcl::BadArgumentException,
+        "the persistence result (of dimensions up to "
+            << result.max_dimension << ") marks " << result.edge_positive.size()
+            << " edges and " << result.triangle_positive.size()
+            << " triangles, the complex has " << complex.numEdges() << " and "
+            << complex.numTriangles() << ": Betti numbers need H1 persistence");
 }
 
 /** Adds the contribution of one simplex to \a betti (Alg 5.8's loop body). */
@@ -30,10 +31,10 @@ addSimplex (const SimplexRef& simplex,
     ++betti[0];
     break;
   case 1:
-    result.positive_edges[simplex.index] ? ++betti[1] : --betti[0];
+    result.edge_positive[simplex.index] ? ++betti[1] : --betti[0];
     break;
   default:
-    result.positive_triangles[simplex.index] ? ++betti[2] : --betti[1];
+    result.triangle_positive[simplex.index] ? ++betti[2] : --betti[1];
   }
 }
 

@@ -1,5 +1,6 @@
 #include <pcl/tda/common/cohomology_persistence.h>
 #include <pcl/tda/common/cycle_set.h>
+#include <pcl/tda/common/edge_adjacency.h>
 
 #include "triangle_deaths.h"
 
@@ -20,28 +21,13 @@ public:
   explicit CoboundaryEnumerator (const FilteredComplex& complex)
   : complex_ (complex)
   , block_offsets_ (complex.numEdges() + 1, 0)
-  , adjacency_offsets_ (complex.numVertices() + 1, 0)
-  , marks_ (complex.numVertices(), {INVALID_SIMPLEX, 0})
+  , adjacency_ (buildEdgeAdjacency (complex.numVertices(), complex.edges()))
+  , common_neighbors_ (complex.edges(), adjacency_)
   {
     for (const auto& triangle : complex.triangles())
       ++block_offsets_[triangle.edges[0] + 1];
     for (std::size_t e = 0; e < complex.numEdges(); ++e)
       block_offsets_[e + 1] += block_offsets_[e];
-
-    const auto& edges = complex.edges();
-    for (const auto& edge : edges) {
-      ++adjacency_offsets_[edge.source + 1];
-      ++adjacency_offsets_[edge.target + 1];
-    }
-    for (std::size_t v = 0; v < complex.numVertices(); ++v)
-      adjacency_offsets_[v + 1] += adjacency_offsets_[v];
-    adjacency_.resize (adjacency_offsets_.back());
-    std::vector<std::uint64_t> next (adjacency_offsets_.begin(),
-                                     adjacency_offsets_.end() - 1);
-    for (SimplexIndex e = 0; e < edges.size(); ++e) {
-      adjacency_[next[edges[e].source]++] = {edges[e].target, e};
-      adjacency_[next[edges[e].target]++] = {edges[e].source, e};
-    }
   }
 
   /** True when some triangle has \a edge as its youngest edge; the first such
@@ -63,35 +49,15 @@ public:
   coboundary (SimplexIndex edge, CycleSet& coboundary)
   {
     coboundary.clear();
-    const FilteredEdge& e = complex_.edges()[edge];
-    for (std::uint64_t k = adjacency_offsets_[e.source];
-         k < adjacency_offsets_[e.source + 1];
-         ++k)
-      marks_[adjacency_[k].neighbor] = {edge, adjacency_[k].edge};
-    for (std::uint64_t k = adjacency_offsets_[e.target];
-         k < adjacency_offsets_[e.target + 1];
-         ++k) {
-      const Mark& mark = marks_[adjacency_[k].neighbor];
-      if (mark.edge_searched != edge)
-        continue;
-      const SimplexIndex triangle =
-          triangleOf (edge, mark.other_edge, adjacency_[k].edge);
+    common_neighbors_.forEach (edge, false, [&] (SimplexIndex uw, SimplexIndex vw) {
+      const SimplexIndex triangle = triangleOf (edge, uw, vw);
       if (triangle != INVALID_SIMPLEX)
         coboundary.push_back (triangle);
-    }
+    });
     std::sort (coboundary.begin(), coboundary.end());
   }
 
 private:
-  struct Neighbor {
-    SimplexIndex neighbor;
-    SimplexIndex edge;
-  };
-  struct Mark {
-    SimplexIndex edge_searched; // the edge whose coboundary marked the vertex last
-    SimplexIndex other_edge;    // the edge from the vertex to that edge's source
-  };
-
   /** The id of the triangle with edges \a a, \a b, \a c, or INVALID_SIMPLEX when
    * the complex does not have it (it need not be a clique complex). */
   SimplexIndex
@@ -114,9 +80,8 @@ private:
 
   const FilteredComplex& complex_;
   std::vector<std::uint64_t> block_offsets_;
-  std::vector<std::uint64_t> adjacency_offsets_;
-  std::vector<Neighbor> adjacency_;
-  std::vector<Mark> marks_;
+  EdgeAdjacency adjacency_;
+  CommonNeighborSearch common_neighbors_;
 };
 
 } // namespace
@@ -138,9 +103,8 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
 
   for (std::size_t k = 0; k < num_edges; ++k) {
     const auto edge = static_cast<SimplexIndex> (num_edges - 1 - k);
-    if (progress && (k % 65536 == 0 || k + 1 == num_edges))
-      progress (k + 1, num_edges);
-    if (!result.positive_edges[edge])
+    reportProgress (progress, k, num_edges);
+    if (!result.edge_positive[edge])
       continue;
     if (coboundaries.isYoungestEdgeOfSome (edge)) { // apparent pair
       killed_edge[coboundaries.firstTriangleOf (edge)] = edge;
@@ -158,7 +122,7 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
       reduced[edge] = column;
     }
   }
-  addTriangleDeaths (complex, killed_edge, result);
+  addTriangleDeaths (killed_edge, result);
 }
 
 } // namespace tda

@@ -8,9 +8,9 @@ namespace pcl {
 namespace tda {
 
 FastIncrementalCycleTable::FastIncrementalCycleTable (
-    const FilteredComplex& complex, const std::vector<bool>& positive_edges)
+    const FilteredComplex& complex, const std::vector<std::uint8_t>& edge_positive)
 : complex_ (complex)
-, positive_edges_ (positive_edges)
+, edge_positive_ (edge_positive)
 , cycles_ (complex.numEdges())
 , updates_ (complex.numEdges())
 , deaths_ (complex.numEdges(), INVALID_SIMPLEX)
@@ -20,7 +20,7 @@ FastIncrementalCycleTable::FastIncrementalCycleTable (
 SimplexIndex
 FastIncrementalCycleTable::addTriangle (SimplexIndex triangle)
 {
-  const CycleSet lambda = positiveBoundary (complex_, positive_edges_, triangle);
+  const CycleSet lambda = positiveBoundary (complex_, edge_positive_, triangle);
   if (lambda.empty())
     return INVALID_SIMPLEX;
   const SimplexIndex youngest = lambda.back();
@@ -92,9 +92,10 @@ FastIncrementalCycleTable::updateCycles (SimplexIndex edge)
 
 void
 addFastIncrementalH1Persistence (const FilteredComplex& complex,
-                                 PersistenceResult& result)
+                                 PersistenceResult& result,
+                                 const ProgressCallback& progress)
 {
-  addH1ByCycleTable<FastIncrementalCycleTable> (complex, result);
+  addH1ByCycleTable<FastIncrementalCycleTable> (complex, result, progress);
 }
 
 } // namespace tda

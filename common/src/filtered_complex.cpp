@@ -13,13 +13,6 @@ namespace tda {
 namespace {
 
 bool
-edgeLess (const FilteredEdge& a, const FilteredEdge& b)
-{
-  return std::tie (a.value, a.source, a.target) <
-         std::tie (b.value, b.source, b.target);
-}
-
-bool
 triangleLess (const FilteredTriangle& a, const FilteredTriangle& b)
 {
   return std::tie (a.value, a.edges) < std::tie (b.value, b.edges);
@@ -36,7 +29,7 @@ edgeKey (SimplexIndex u, SimplexIndex v)
 FilteredComplex::FilteredComplex (std::size_t num_vertices,
                                   std::vector<FilteredEdge> edges,
                                   std::vector<FilteredTriangle> triangles,
-                                  std::vector<int> point_indices)
+                                  pcl::Indices point_indices)
 : num_vertices_ (num_vertices)
 , edges_ (std::move (edges))
 , triangles_ (std::move (triangles))
@@ -57,7 +50,7 @@ FilteredComplex::FilteredComplex (std::size_t num_vertices,
       PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                            "edge " << e << " has value " << edge.value
                                    << "; values must be finite and >= 0");
-    if (e > 0 && !edgeLess (edges_[e - 1], edge))
+    if (e > 0 && !edgeFiltrationLess (edges_[e - 1], edge))
       PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                            "edges " << e - 1 << " and " << e
                                     << " are duplicates or out of filtration order");
@@ -106,7 +99,7 @@ FilteredComplex
 FilteredComplex::adoptValidParts (std::size_t num_vertices,
                                   std::vector<FilteredEdge> edges,
                                   std::vector<FilteredTriangle> triangles,
-                                  std::vector<int> point_indices)
+                                  pcl::Indices point_indices)
 {
   FilteredComplex complex;
   complex.num_vertices_ = num_vertices;
@@ -131,7 +124,7 @@ FilteredComplex::fromLists (std::size_t num_vertices,
     if (edge.source > edge.target)
       std::swap (edge.source, edge.target);
   }
-  std::sort (edges.begin(), edges.end(), edgeLess);
+  std::sort (edges.begin(), edges.end(), edgeFiltrationLess);
 
   std::unordered_map<std::uint64_t, SimplexIndex> edge_ids;
   edge_ids.reserve (edges.size());

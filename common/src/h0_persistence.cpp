@@ -1,7 +1,7 @@
 #include <pcl/tda/common/h0_persistence.h>
 #include <pcl/tda/common/union_find.h>
 
-#include <limits>
+#include <algorithm>
 
 namespace pcl {
 namespace tda {
@@ -11,7 +11,8 @@ computeH0Persistence (const FilteredComplex& complex)
 {
   const std::size_t num_vertices = complex.numVertices();
   PersistenceResult result;
-  result.positive_edges.assign (complex.numEdges(), false);
+  result.vertex_killer.assign (num_vertices, INVALID_SIMPLEX);
+  result.edge_positive.assign (complex.numEdges(), 1);
 
   UnionFind components (num_vertices);
   // The oldest (smallest) vertex of each component, stored at its representative.
@@ -23,22 +24,12 @@ computeH0Persistence (const FilteredComplex& complex)
   for (SimplexIndex e = 0; e < edges.size(); ++e) {
     const SimplexIndex a = components.find (edges[e].source);
     const SimplexIndex b = components.find (edges[e].target);
-    if (a == b) {
-      result.positive_edges[e] = true;
+    if (a == b)
       continue;
-    }
-    const SimplexIndex elder = std::min (oldest[a], oldest[b]);
-    const SimplexIndex younger = std::max (oldest[a], oldest[b]);
-    result.pairs.push_back ({0, younger, e, 0.0, edges[e].value});
-    oldest[components.linkRoots (a, b)] = elder;
+    result.edge_positive[e] = 0;
+    result.vertex_killer[std::max (oldest[a], oldest[b])] = e;
+    oldest[components.linkRoots (a, b)] = std::min (oldest[a], oldest[b]);
   }
-  for (SimplexIndex v = 0; v < num_vertices; ++v)
-    if (components.find (v) == v)
-      result.pairs.push_back ({0,
-                               oldest[v],
-                               INVALID_SIMPLEX,
-                               0.0,
-                               std::numeric_limits<double>::infinity()});
   return result;
 }
 

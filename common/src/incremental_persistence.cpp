@@ -5,10 +5,10 @@
 namespace pcl {
 namespace tda {
 
-IncrementalCycleTable::IncrementalCycleTable (const FilteredComplex& complex,
-                                              const std::vector<bool>& positive_edges)
+IncrementalCycleTable::IncrementalCycleTable (
+    const FilteredComplex& complex, const std::vector<std::uint8_t>& edge_positive)
 : complex_ (complex)
-, positive_edges_ (positive_edges)
+, edge_positive_ (edge_positive)
 , cycles_ (complex.numEdges())
 , deaths_ (complex.numEdges(), INVALID_SIMPLEX)
 {}
@@ -16,7 +16,7 @@ IncrementalCycleTable::IncrementalCycleTable (const FilteredComplex& complex,
 SimplexIndex
 IncrementalCycleTable::addTriangle (SimplexIndex triangle)
 {
-  CycleSet lambda = positiveBoundary (complex_, positive_edges_, triangle);
+  CycleSet lambda = positiveBoundary (complex_, edge_positive_, triangle);
   while (!lambda.empty()) {
     const SimplexIndex youngest = lambda.back();
     if (!isOccupied (youngest)) {
@@ -30,9 +30,11 @@ IncrementalCycleTable::addTriangle (SimplexIndex triangle)
 }
 
 void
-addIncrementalH1Persistence (const FilteredComplex& complex, PersistenceResult& result)
+addIncrementalH1Persistence (const FilteredComplex& complex,
+                             PersistenceResult& result,
+                             const ProgressCallback& progress)
 {
-  addH1ByCycleTable<IncrementalCycleTable> (complex, result);
+  addH1ByCycleTable<IncrementalCycleTable> (complex, result, progress);
 }
 
 } // namespace tda

@@ -3,40 +3,67 @@
 #include <pcl/tda/common/h0_persistence.h>
 #include <pcl/tda/common/incremental_persistence.h>
 #include <pcl/tda/common/persistence_engines.h>
+#include <pcl/tda/common/standard_reduction.h>
+
+#include <cstddef>
 
 namespace pcl {
 namespace tda {
 
+namespace {
+
+void
+recomputeByStandardReduction (const FilteredComplex& complex,
+                              PersistenceResult& result,
+                              const ProgressCallback& progress)
+{
+  result = computeStandardReduction (complex, progress);
+}
+
+constexpr std::array<PersistenceEngineEntry, 4> ENGINES{{
+    {PersistenceEngine::STANDARD, "standard", recomputeByStandardReduction},
+    {PersistenceEngine::INCREMENTAL, "incremental", addIncrementalH1Persistence},
+    {PersistenceEngine::FAST_INCREMENTAL, "fip", addFastIncrementalH1Persistence},
+    {PersistenceEngine::COHOMOLOGY, "cohomology", addCohomologyH1Persistence},
+}};
+
+constexpr bool
+tableFollowsEnumeration ()
+{
+  for (std::size_t k = 0; k < ENGINES.size(); ++k)
+    if (static_cast<std::size_t> (ENGINES[k].engine) != k)
+      return false;
+  return static_cast<std::size_t> (PersistenceEngine::COHOMOLOGY) + 1 == ENGINES.size();
+}
+static_assert (tableFollowsEnumeration(),
+               "the engine table must list every engine once, in enumeration order");
+
+} // namespace
+
+const std::array<PersistenceEngineEntry, 4>&
+persistenceEngines ()
+{
+  return ENGINES;
+}
+
+const PersistenceEngineEntry&
+engineEntry (PersistenceEngine engine)
+{
+  return ENGINES[static_cast<std::size_t> (engine)];
+}
+
 std::string
 engineName (PersistenceEngine engine)
 {
-  switch (engine) {
-  case PersistenceEngine::STANDARD:
-    return "standard";
-  case PersistenceEngine::INCREMENTAL:
-    return "incremental";
-  case PersistenceEngine::FAST_INCREMENTAL:
-    return "fip";
-  default:
-    return "cohomology";
-  }
-}
-
-std::vector<PersistenceEngine>
-allEngines ()
-{
-  return {PersistenceEngine::STANDARD,
-          PersistenceEngine::INCREMENTAL,
-          PersistenceEngine::FAST_INCREMENTAL,
-          PersistenceEngine::COHOMOLOGY};
+  return engineEntry (engine).name;
 }
 
 bool
 parseEngineName (const std::string& name, PersistenceEngine& engine)
 {
-  for (const PersistenceEngine candidate : allEngines())
-    if (engineName (candidate) == name) {
-      engine = candidate;
+  for (const PersistenceEngineEntry& entry : ENGINES)
+    if (name == entry.name) {
+      engine = entry.engine;
       return true;
     }
   return false;
@@ -48,19 +75,7 @@ addH1Persistence (const FilteredComplex& complex,
                   PersistenceResult& result,
                   const ProgressCallback& progress)
 {
-  switch (engine) {
-  case PersistenceEngine::STANDARD:
-    result = computeStandardReduction (complex, progress);
-    break;
-  case PersistenceEngine::INCREMENTAL:
-    addIncrementalH1Persistence (complex, result);
-    break;
-  case PersistenceEngine::FAST_INCREMENTAL:
-    addFastIncrementalH1Persistence (complex, result);
-    break;
-  default:
-    addCohomologyH1Persistence (complex, result, progress);
-  }
+  engineEntry (engine).add_h1 (complex, result, progress);
 }
 
 PersistenceResult
@@ -68,8 +83,6 @@ computePersistence (const FilteredComplex& complex,
                     PersistenceEngine engine,
                     const ProgressCallback& progress)
 {
-  if (engine == PersistenceEngine::STANDARD)
-    return computeStandardReduction (complex, progress);
   PersistenceResult result = computeH0Persistence (complex);
   addH1Persistence (complex, engine, result, progress);
   return result;

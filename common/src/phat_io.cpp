@@ -137,7 +137,8 @@ complexFromColumns (const std::vector<BoundaryColumn>& columns)
       PCL_THROW_EXCEPTION (pcl::IOException, "PHAT column " << c << ": " << what);
     };
     if (column.dimension < 0 || column.dimension > 2 ||
-        column.rows.size() != (column.dimension == 0 ? 0u : column.dimension + 1u))
+        column.rows.size() !=
+            static_cast<std::size_t> (column.dimension == 0 ? 0 : column.dimension + 1))
       fail ("not a vertex, edge or triangle with the right number of faces");
     for (std::size_t r = 0; r < column.rows.size(); ++r) {
       const std::int64_t row = column.rows[r];

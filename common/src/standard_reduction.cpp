@@ -31,8 +31,11 @@ computeStandardReduction (const FilteredComplex& complex,
   std::vector<Column> reduced (num_columns);
   std::vector<std::uint32_t> pivot_owner (num_columns, NO_COLUMN);
   PersistenceResult result;
-  result.positive_edges.assign (complex.numEdges(), false);
-  result.positive_triangles.assign (complex.numTriangles(), false);
+  result.max_dimension = 1;
+  result.vertex_killer.assign (complex.numVertices(), INVALID_SIMPLEX);
+  result.edge_positive.assign (complex.numEdges(), 0);
+  result.edge_killer.assign (complex.numEdges(), INVALID_SIMPLEX);
+  result.triangle_positive.assign (complex.numTriangles(), 0);
 
   Column column, buffer;
   for (std::uint32_t j = 0; j < num_columns; ++j) {
@@ -51,31 +54,19 @@ computeStandardReduction (const FilteredComplex& complex,
 
     if (column.empty()) {
       if (simplex.dimension == 1)
-        result.positive_edges[simplex.index] = true;
+        result.edge_positive[simplex.index] = 1;
       else if (simplex.dimension == 2)
-        result.positive_triangles[simplex.index] = true;
+        result.triangle_positive[simplex.index] = 1;
     }
     else {
       const SimplexRef birth = order[column.back()];
       pivot_owner[column.back()] = j;
-      result.pairs.push_back ({birth.dimension,
-                               birth.index,
-                               simplex.index,
-                               complex.value (birth),
-                               complex.value (simplex)});
+      (birth.dimension == 0 ? result.vertex_killer : result.edge_killer)[birth.index] =
+          simplex.index;
       reduced[j].swap (column);
     }
-    if (progress && (j % 4096 == 0 || j + 1 == num_columns))
-      progress (j + 1, num_columns);
+    reportProgress (progress, j, num_columns);
   }
-
-  for (std::uint32_t g = 0; g < num_columns; ++g)
-    if (order[g].dimension < 2 && reduced[g].empty() && pivot_owner[g] == NO_COLUMN)
-      result.pairs.push_back ({order[g].dimension,
-                               order[g].index,
-                               INVALID_SIMPLEX,
-                               complex.value (order[g]),
-                               std::numeric_limits<double>::infinity()});
   return result;
 }
 

@@ -2,10 +2,10 @@
 // generated clouds, known Betti numbers, its JSON line, and its refusals.
 
 #include <pcl/io/pcd_io.h>
-#include <pcl/tda/apps/synthetic_scenes.h>
 #include <pcl/tda/common/diagram_comparison.h>
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/phat_io.h>
+#include <pcl/tda/generators/shapes.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>

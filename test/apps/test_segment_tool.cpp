@@ -6,7 +6,7 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/apps/cloud_files.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
-#include <pcl/tda/apps/synthetic_scenes.h>
+#include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
@@ -62,8 +62,9 @@ checkLabels (const LabelledCloud& labelled)
   for (std::size_t i = 0; i < labelled.size(); ++i) {
     const auto& point = labelled[i];
     EXPECT_TRUE (pcl::isXYZFinite (point));
-    if (colour_of.count (point.label))
+    if (colour_of.count (point.label)) {
       EXPECT_EQ (colour_of[point.label], point.rgba & 0xffffff) << point.label;
+    }
     colour_of[point.label] = point.rgba & 0xffffff;
     if (point.label != 0)
       by_label[point.label].indices.push_back (static_cast<pcl::index_t> (i));
@@ -72,9 +73,10 @@ checkLabels (const LabelledCloud& labelled)
   for (std::uint32_t label = 1; label <= by_label.size(); ++label) {
     EXPECT_EQ (by_label.count (label), 1u) << "labels are not 1.." << by_label.size();
     clusters.push_back (by_label[label]);
-    if (label > 1)
+    if (label > 1) {
       EXPECT_GE (clusters[label - 2].indices.size(),
                  clusters[label - 1].indices.size());
+    }
   }
   return clusters;
 }

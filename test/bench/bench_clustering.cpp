@@ -18,8 +18,8 @@
 #include <pcl/search/kdtree.h>
 #include <pcl/segmentation/extract_clusters.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
-#include <pcl/tda/apps/synthetic_scenes.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 #include <pcl/point_types.h>
 

@@ -431,7 +431,7 @@ measureOurs (const Cloud::ConstPtr& cloud, double radius, int runs)
     const auto h1_start = Clock::now();
     pcl::tda::addH1Persistence (
         complex, pcl::tda::PersistenceEngine::COHOMOLOGY, result);
-    pcl::tda::PersistenceDiagram diagram = result.diagram (1);
+    pcl::tda::PersistenceDiagram diagram = result.diagram (complex, 1);
     h1.push_back (secondsSince (h1_start));
     total.push_back (build.back() + h0.back() + h1.back());
     ours.build_phases = builder.getTimings();
@@ -469,9 +469,11 @@ measureEngine (const OursMeasurement& ours,
     pcl::tda::addH1Persistence (ours.complex, engine, result);
     times.push_back (secondsSince (start));
   }
-  return {pcl::tda::engineName (engine),
-          summarize (times),
-          pcl::tda::compareDiagrams (result.diagram (1), ours.diagram, 1e-5).equal};
+  return {
+      pcl::tda::engineName (engine),
+      summarize (times),
+      pcl::tda::compareDiagrams (result.diagram (ours.complex, 1), ours.diagram, 1e-5)
+          .equal};
 }
 
 struct PHATMeasurement {
@@ -1270,10 +1272,9 @@ benchmark (const Options& options, const std::string& self)
       results.phat.push_back (measurePHAT<phat::spectral_sequence_reduction> (
           "spectral_sequence", ours, pairs, runs, 1));
   }
-  for (const auto engine : pcl::tda::allEngines())
-    if (engine != pcl::tda::PersistenceEngine::COHOMOLOGY &&
-        wants (pcl::tda::engineName (engine)))
-      results.engines.push_back (measureEngine (ours, engine, runs));
+  for (const auto& entry : pcl::tda::persistenceEngines())
+    if (entry.engine != pcl::tda::PersistenceEngine::COHOMOLOGY && wants (entry.name))
+      results.engines.push_back (measureEngine (ours, entry.engine, runs));
   results.memory_end = peakMemory();
 
   printReport (options, ours, results);

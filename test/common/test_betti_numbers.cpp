@@ -1,4 +1,5 @@
 #include <pcl/tda/common/betti_numbers.h>
+#include <pcl/tda/common/h0_persistence.h>
 #include <pcl/tda/common/standard_reduction.h>
 #include <pcl/exceptions.h>
 
@@ -101,26 +102,28 @@ TEST (BettiNumbers, ThesisFigure52Filter)
 {
   const FilteredComplex complex = test::figure52Filter();
   const PersistenceResult result = computeStandardReduction (complex);
-  EXPECT_EQ (result.positive_edges,
-             (std::vector<bool>{false, false, true, false, false, true, true, true}));
-  EXPECT_EQ (result.positive_triangles,
-             (std::vector<bool>{false, false, false, false, true}));
+  EXPECT_EQ (result.edge_positive, (std::vector<std::uint8_t>{0, 0, 1, 0, 0, 1, 1, 1}));
+  EXPECT_EQ (result.triangle_positive, (std::vector<std::uint8_t>{0, 0, 0, 0, 1}));
   const auto prefixes = computePrefixBettiNumbers (complex, result);
   EXPECT_EQ (prefixes.back(), (BettiNumbers{1, 0, 1}));
   EXPECT_EQ (prefixes[12], (BettiNumbers{1, 4, 0})); // all edges in: four holes
   // The pairs of Sec 5.2.3: (bc, bce), (ce, ace), (be, abc), (ac, acd).
   using Pair = std::pair<std::int64_t, std::int64_t>;
   const auto pairs = test::globalPairs (complex, result);
-  for (const Pair expected : {Pair{12, 13}, Pair{11, 14}, Pair{7, 15}, Pair{10, 16}})
+  for (const Pair& expected : {Pair{12, 13}, Pair{11, 14}, Pair{7, 15}, Pair{10, 16}})
     EXPECT_NE (std::find (pairs.begin(), pairs.end(), expected), pairs.end())
         << expected.first << " " << expected.second;
 }
 
 TEST (BettiNumbers, RefusesResultWithoutTriangleMarks)
 {
+  EXPECT_THROW (
+      computePrefixBettiNumbers (test::figure52Filter(),
+                                 computeH0Persistence (test::figure52Filter())),
+      pcl::BadArgumentException);
   const FilteredComplex complex = test::figure52Filter();
   PersistenceResult h0_only = computeStandardReduction (complex);
-  h0_only.positive_triangles.clear();
+  h0_only.triangle_positive.clear();
   EXPECT_THROW (computePrefixBettiNumbers (complex, h0_only),
                 pcl::BadArgumentException);
   EXPECT_THROW (computeBettiNumbersAt (complex, h0_only, 1.0),

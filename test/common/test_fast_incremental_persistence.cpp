@@ -25,7 +25,7 @@ TEST (FastIncrementalPersistence, ThesisExampleTableStates)
 {
   const FilteredComplex complex = figure52Filter();
   const PersistenceResult h0 = computeH0Persistence (complex);
-  FastIncrementalCycleTable table (complex, h0.positive_edges);
+  FastIncrementalCycleTable table (complex, h0.edge_positive);
 
   // bce: Lambda = {be, ce, bc}, i = 12 free: T[12] = {be, ce}; be and ce get 12 in
   // their update lists.

@@ -39,16 +39,19 @@ TEST (FilteredComplex, FiltrationOrderPutsFacesFirst)
       const double value = complex.value (order[g]);
       ASSERT_GE (value, previous) << "case " << k;
       previous = value;
-      if (order[g].dimension == 0)
+      if (order[g].dimension == 0) {
         ASSERT_EQ (order[g].index, g);
+      }
       if (order[g].dimension == 1) {
         edge_position[order[g].index] = g;
-        if (order[g].index > 0)
+        if (order[g].index > 0) {
           ASSERT_GT (g, edge_position[order[g].index - 1]);
+        }
       }
-      if (order[g].dimension == 2)
+      if (order[g].dimension == 2) {
         for (const auto e : complex.triangles()[order[g].index].edges)
           ASSERT_LT (edge_position[e], g) << "case " << k;
+      }
     }
   }
 }

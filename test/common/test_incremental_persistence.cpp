@@ -15,7 +15,7 @@ TEST (IncrementalPersistence, ThesisExampleTableStates)
 {
   const FilteredComplex complex = figure52Filter();
   const PersistenceResult h0 = computeH0Persistence (complex);
-  IncrementalCycleTable table (complex, h0.positive_edges);
+  IncrementalCycleTable table (complex, h0.edge_positive);
 
   // bce: Lambda = {bc, ce, be}, i = 12: stored in the free slot T[12].
   EXPECT_EQ (table.addTriangle (BCE), BC);
@@ -39,10 +39,9 @@ TEST (IncrementalPersistence, ThesisExampleTableStates)
   // beta_1 = positive edges - negative triangles = 4 - 4 = 0.
   const PersistenceResult result =
       computePersistence (complex, PersistenceEngine::INCREMENTAL);
-  EXPECT_EQ (
-      std::count (result.positive_edges.begin(), result.positive_edges.end(), true), 4);
-  EXPECT_EQ (std::count (result.positive_triangles.begin(),
-                         result.positive_triangles.end(),
-                         false),
+  EXPECT_EQ (std::count (result.edge_positive.begin(), result.edge_positive.end(), 1),
              4);
+  EXPECT_EQ (
+      std::count (result.triangle_positive.begin(), result.triangle_positive.end(), 0),
+      4);
 }

@@ -395,10 +395,12 @@ TEST (BarcodeSVG, BarsSpanTheirIntervalsSortedByBirthThenLength)
       EXPECT_TRUE (hasClass (*bars[i], "essential"));
       EXPECT_NEAR (end, right, 0.11);
     }
-    else
+    else {
       EXPECT_NEAR (end, pixel (expected[i].second), 0.11);
-    if (i % 3 != 0) // top to bottom within a panel
+    }
+    if (i % 3 != 0) { // top to bottom within a panel
       EXPECT_GT (number (*bars[i], "y"), number (*bars[i - 1], "y"));
+    }
   }
 }
 

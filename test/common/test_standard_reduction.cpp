@@ -38,12 +38,15 @@ TEST (StandardReduction, HollowTriangleHasOneComponentAndOneHole)
   const auto complex =
       FilteredComplex::fromLists (3, {{0, 1, 1.0}, {0, 2, 1.0}, {1, 2, 1.0}}, {});
   const PersistenceResult result = computeStandardReduction (complex);
-  const PersistenceDiagram diagram = result.diagram();
+  const PersistenceDiagram diagram = result.diagram (complex);
   ASSERT_EQ (diagram.size(), 4u);
   EXPECT_EQ (countIntervals (diagram, 0, 0.0, 1.0), 2u);
   EXPECT_EQ (countIntervals (diagram, 0, 0.0, INF), 1u);
   EXPECT_EQ (countIntervals (diagram, 1, 1.0, INF), 1u);
-  EXPECT_EQ (result.positive_edges, (std::vector<bool>{false, false, true}));
+  EXPECT_EQ (result.edge_positive, (std::vector<std::uint8_t>{0, 0, 1}));
+  EXPECT_EQ (
+      result.edge_killer,
+      (std::vector<SimplexIndex>{INVALID_SIMPLEX, INVALID_SIMPLEX, INVALID_SIMPLEX}));
 }
 
 // Thesis Sec 2.8.2 (Fig 2.10-2.11): sigma_1..3 vertices, sigma_4 = 12, sigma_5 = 13,
@@ -58,14 +61,24 @@ TEST (StandardReduction, ThesisSevenSimplexFiltration)
   using Pair = std::pair<std::int64_t, std::int64_t>;
   EXPECT_EQ (test::globalPairs (complex, result),
              (std::vector<Pair>{{1, 3}, {2, 4}, {5, 6}}));
-  ASSERT_EQ (result.pairs.size(), 4u);
-  const PersistencePair& essential = result.pairs.back();
-  EXPECT_TRUE (essential.isEssential());
-  EXPECT_EQ (essential.dimension, 0);
-  EXPECT_EQ (essential.birth_simplex, 0u);
+  const std::vector<PersistencePair> pairs = result.pairs (complex);
+  ASSERT_EQ (pairs.size(), 4u);
+  EXPECT_EQ (std::count_if (pairs.begin(),
+                            pairs.end(),
+                            [] (const PersistencePair& pair) {
+                              return pair.isEssential() && pair.dimension == 0 &&
+                                     pair.birth_simplex == 0u;
+                            }),
+             1);
+  // The dense form: vertex 1 dies by edge 0, vertex 2 by edge 1, edge 2 by the
+  // triangle.
+  EXPECT_EQ (result.vertex_killer, (std::vector<SimplexIndex>{INVALID_SIMPLEX, 0, 1}));
+  EXPECT_EQ (result.edge_killer,
+             (std::vector<SimplexIndex>{INVALID_SIMPLEX, INVALID_SIMPLEX, 0}));
+  EXPECT_EQ (result.triangle_positive, (std::vector<std::uint8_t>{0}));
   // With our vertex values (all 0) the intervals are [0,1), [0,3) in H0 and the
   // H1 pair (sigma_6, sigma_7) has length 0 here: both enter at 3.
-  const PersistenceDiagram diagram = result.diagram();
+  const PersistenceDiagram diagram = result.diagram (complex);
   EXPECT_EQ (countIntervals (diagram, 0, 0.0, 1.0), 1u);
   EXPECT_EQ (countIntervals (diagram, 0, 0.0, 3.0), 1u);
   EXPECT_EQ (countIntervals (diagram, 1, 3.0, 3.0), 0u);
@@ -102,12 +115,13 @@ TEST (StandardReduction, EqualsPHATOnRandomComplexes)
 
     // Essential classes: every simplex that is neither a birth nor a death of a pair;
     // those of dimension 2 are the positive triangles.
+    const std::vector<PersistencePair> pairs = result.pairs (complex);
     const std::size_t essential =
-        std::count_if (result.pairs.begin(), result.pairs.end(), [] (const auto& pair) {
+        std::count_if (pairs.begin(), pairs.end(), [] (const auto& pair) {
           return pair.isEssential();
         });
     const std::size_t positive_triangles = std::count (
-        result.positive_triangles.begin(), result.positive_triangles.end(), true);
+        result.triangle_positive.begin(), result.triangle_positive.end(), 1);
     EXPECT_EQ (essential + positive_triangles, complex.numSimplices() - 2 * ours.size())
         << "case " << k;
   }

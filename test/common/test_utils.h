@@ -1,7 +1,7 @@
 #pragma once
 
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/common/persistence_result.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -102,7 +102,7 @@ globalPairs (const FilteredComplex& complex, const PersistenceResult& result)
   for (std::size_t g = 0; g < order.size(); ++g)
     position[order[g].dimension][order[g].index] = static_cast<std::int64_t> (g);
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
-  for (const auto& pair : result.pairs)
+  for (const auto& pair : result.pairs (complex))
     if (!pair.isEssential())
       pairs.emplace_back (position[pair.dimension][pair.birth_simplex],
                           position[pair.dimension + 1][pair.death_simplex]);

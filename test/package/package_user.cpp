@@ -20,7 +20,7 @@ main ()
   pcl::tda::FilteredComplex complex;
   if (!builder.compute (complex))
     return 1;
-  const auto diagram = pcl::tda::computeH0Persistence (complex).diagram();
+  const auto diagram = pcl::tda::computeH0Persistence (complex).diagram (complex);
   std::printf ("edges %zu intervals %zu\n", complex.numEdges(), diagram.size());
   return complex.numEdges() == 4 && diagram.size() == 4 ? 0 : 1;
 }

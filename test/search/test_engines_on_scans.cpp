@@ -62,12 +62,13 @@ expectAllEnginesAgree (const FilteredComplex& complex, const std::string& what)
       computePersistence (complex, PersistenceEngine::STANDARD);
   const auto expected = test::globalPairs (complex, oracle);
   EXPECT_EQ (phatPairs (complex), expected) << what;
-  for (const PersistenceEngine engine : allEngines()) {
-    const PersistenceResult result = computePersistence (complex, engine);
+  for (const PersistenceEngineEntry& entry : persistenceEngines()) {
+    const PersistenceResult result = computePersistence (complex, entry.engine);
     EXPECT_EQ (test::globalPairs (complex, result), expected)
-        << what << " " << engineName (engine);
-    EXPECT_EQ (result.positive_triangles, oracle.positive_triangles)
-        << what << " " << engineName (engine);
+        << what << " " << entry.name;
+    EXPECT_EQ (result.edge_killer, oracle.edge_killer) << what << " " << entry.name;
+    EXPECT_EQ (result.triangle_positive, oracle.triangle_positive)
+        << what << " " << entry.name;
   }
 }
 

@@ -5,9 +5,9 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
-#include <pcl/tda/apps/synthetic_scenes.h>
 #include <pcl/tda/common/diagram_comparison.h>
 #include <pcl/tda/common/standard_reduction.h>
+#include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 
@@ -311,7 +311,8 @@ TEST (PersistentEuclideanClusterExtraction, DiagramEqualsStandardReduction)
     builder.setRadius (radius);
     FilteredComplex complex;
     ASSERT_TRUE (builder.compute (complex));
-    const PersistenceDiagram expected = computeStandardReduction (complex).diagram (0);
+    const PersistenceDiagram expected =
+        computeStandardReduction (complex).diagram (complex, 0);
 
     Extraction extraction;
     const auto clusters = ourClusters (cloud, radius, 1, 1000000, &extraction);

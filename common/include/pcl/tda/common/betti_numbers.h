@@ -1,7 +1,7 @@
 #pragma once
 
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/common/persistence_result.h>
 
 #include <array>
 #include <cstdint>

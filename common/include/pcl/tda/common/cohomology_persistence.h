@@ -1,8 +1,8 @@
 #pragma once
 
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
-#include <pcl/tda/common/standard_reduction.h>
+#include <pcl/tda/common/persistence_result.h>
+#include <pcl/tda/common/progress.h>
 
 namespace pcl {
 namespace tda {

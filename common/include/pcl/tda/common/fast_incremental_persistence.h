@@ -2,8 +2,10 @@
 
 #include <pcl/tda/common/cycle_set.h>
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/common/persistence_result.h>
+#include <pcl/tda/common/progress.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace pcl {
@@ -29,9 +31,9 @@ namespace tda {
 class FastIncrementalCycleTable {
 public:
   /** \param[in] complex the filtered complex (kept by reference)
-   * \param[in] positive_edges the edge marks of H0 persistence (kept by reference) */
+   * \param[in] edge_positive the edge marks of H0 persistence (kept by reference) */
   FastIncrementalCycleTable (const FilteredComplex& complex,
-                             const std::vector<bool>& positive_edges);
+                             const std::vector<std::uint8_t>& edge_positive);
 
   /** \brief Cycle storage (Alg 5.13) for the next triangle in filtration order.
    * \return the positive edge whose class \a triangle kills, or INVALID_SIMPLEX when
@@ -80,7 +82,7 @@ private:
   updateCycles (SimplexIndex edge);
 
   const FilteredComplex& complex_;
-  const std::vector<bool>& positive_edges_;
+  const std::vector<std::uint8_t>& edge_positive_;
   std::vector<CycleSet> cycles_;
   std::vector<std::vector<SimplexIndex>> updates_;
   std::vector<SimplexIndex> deaths_;
@@ -95,7 +97,8 @@ private:
  * (computeH0Persistence()), to the standard reduction's result. */
 void
 addFastIncrementalH1Persistence (const FilteredComplex& complex,
-                                 PersistenceResult& result);
+                                 PersistenceResult& result,
+                                 const ProgressCallback& progress = {});
 
 } // namespace tda
 } // namespace pcl

@@ -1,8 +1,11 @@
 #pragma once
 
+#include <pcl/types.h>
+
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 namespace pcl {
@@ -24,6 +27,15 @@ struct FilteredEdge {
   SimplexIndex target;
   double value;
 };
+
+/** \brief The filtration order of edges: by (value, source, target). A strict total
+ * order on distinct edges, so that any correct sort gives the same list. */
+inline bool
+edgeFiltrationLess (const FilteredEdge& a, const FilteredEdge& b)
+{
+  return std::tie (a.value, a.source, a.target) <
+         std::tie (b.value, b.source, b.target);
+}
 
 /** \brief A triangle of a filtered complex: its three edge ids in decreasing
  * filtration order (edges[0] is the youngest) and its filtration value (for a
@@ -65,7 +77,7 @@ public:
   FilteredComplex (std::size_t num_vertices,
                    std::vector<FilteredEdge> edges,
                    std::vector<FilteredTriangle> triangles,
-                   std::vector<int> point_indices = {});
+                   pcl::Indices point_indices = {});
 
   /** \brief Takes parts that are valid and in filtration order by construction, as
    * the complex builders make them, without checking them (the checks of the
@@ -74,7 +86,7 @@ public:
   adoptValidParts (std::size_t num_vertices,
                    std::vector<FilteredEdge> edges,
                    std::vector<FilteredTriangle> triangles,
-                   std::vector<int> point_indices);
+                   pcl::Indices point_indices);
 
   /** \brief Builds a complex from plain lists in any order, e.g. for tests and
    * random complexes. A triangle is given by its vertices; its value is the largest
@@ -125,7 +137,7 @@ public:
   }
 
   /** \brief Input point index of every vertex. */
-  const std::vector<int>&
+  const pcl::Indices&
   pointIndices () const
   {
     return point_indices_;
@@ -147,7 +159,7 @@ private:
   std::size_t num_vertices_ = 0;
   std::vector<FilteredEdge> edges_;
   std::vector<FilteredTriangle> triangles_;
-  std::vector<int> point_indices_;
+  pcl::Indices point_indices_;
 };
 
 } // namespace tda

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/common/persistence_result.h>
 
 namespace pcl {
 namespace tda {
@@ -12,9 +12,10 @@ namespace tda {
  * Edges are taken in filtration order; an edge joining two components is negative
  * and kills the younger component (the one whose oldest vertex has the larger
  * index), an edge inside a component is positive. Every component left at the end
- * is an essential class born by its oldest vertex. The negative edges, marked in
- * PersistenceResult::positive_edges, form the spanning forest of the complex.
- * The pairs are exactly those of the standard reduction; triangles are ignored.
+ * is an essential class born by its oldest vertex. Fills the vertex and edge arrays
+ * of the result (max_dimension 0): the killer of every vertex and the marks of the
+ * edges, whose negative ones form the minimum spanning forest of the complex. The
+ * pairing is exactly that of the standard reduction; triangles are ignored.
  */
 PersistenceResult
 computeH0Persistence (const FilteredComplex& complex);

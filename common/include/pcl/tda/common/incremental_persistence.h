@@ -2,8 +2,10 @@
 
 #include <pcl/tda/common/cycle_set.h>
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/common/persistence_result.h>
+#include <pcl/tda/common/progress.h>
 
+#include <cstdint>
 #include <vector>
 
 namespace pcl {
@@ -22,9 +24,9 @@ namespace tda {
 class IncrementalCycleTable {
 public:
   /** \param[in] complex the filtered complex (kept by reference)
-   * \param[in] positive_edges the edge marks of H0 persistence (kept by reference) */
+   * \param[in] edge_positive the edge marks of H0 persistence (kept by reference) */
   IncrementalCycleTable (const FilteredComplex& complex,
-                         const std::vector<bool>& positive_edges);
+                         const std::vector<std::uint8_t>& edge_positive);
 
   /** \brief Alg 5.11 for the next triangle in filtration order.
    * \return the positive edge whose class \a triangle kills, or INVALID_SIMPLEX when
@@ -54,7 +56,7 @@ public:
 
 private:
   const FilteredComplex& complex_;
-  const std::vector<bool>& positive_edges_;
+  const std::vector<std::uint8_t>& edge_positive_;
   std::vector<CycleSet> cycles_;
   std::vector<SimplexIndex> deaths_;
   CycleSet buffer_;
@@ -64,7 +66,9 @@ private:
  * IncrementalCycleTable: completes \a result, the H0 persistence of \a complex
  * (computeH0Persistence()), to the standard reduction's result. */
 void
-addIncrementalH1Persistence (const FilteredComplex& complex, PersistenceResult& result);
+addIncrementalH1Persistence (const FilteredComplex& complex,
+                             PersistenceResult& result,
+                             const ProgressCallback& progress = {});
 
 } // namespace tda
 } // namespace pcl

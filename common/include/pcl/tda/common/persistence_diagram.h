@@ -43,23 +43,5 @@ struct PersistencePair {
   }
 };
 
-/** \brief What a persistence engine computes on a FilteredComplex: every pair of
- * dimensions 0 and 1 (zero-length ones included), their essential classes, and the
- * positive/negative mark of every edge and triangle (vertices are all positive).
- * Negative edges form the spanning forest of the complex (thesis Sec 5.4); positive
- * triangles create the 2-cycles, which a complex without tetrahedra never kills:
- * they are counted by the marks (beta_2), not listed as pairs. Triangle marks are
- * empty when the engine computed H0 only. */
-struct PersistenceResult {
-  std::vector<PersistencePair> pairs;
-  std::vector<bool> positive_edges;
-  std::vector<bool> positive_triangles;
-
-  /** \brief The diagram of dimensions <= \a max_dimension, without zero-length
-   * intervals. */
-  PersistenceDiagram
-  diagram (int max_dimension = 2) const;
-};
-
 } // namespace tda
 } // namespace pcl

@@ -1,16 +1,16 @@
 #pragma once
 
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
-#include <pcl/tda/common/standard_reduction.h>
+#include <pcl/tda/common/persistence_result.h>
+#include <pcl/tda/common/progress.h>
 
+#include <array>
 #include <string>
-#include <vector>
 
 namespace pcl {
 namespace tda {
 
-/** \brief The persistence engines of PCL-TDA. All compute the same pairs on the
+/** \brief The persistence engines of PCL-TDA. All compute the same result on the
  * same FilteredComplex (H0 by union-find in all but STANDARD) and are swappable. */
 enum class PersistenceEngine {
   /** Reduction of the whole boundary matrix (thesis Alg 2.1): the oracle. */
@@ -25,25 +25,45 @@ enum class PersistenceEngine {
   COHOMOLOGY
 };
 
+/** \brief The signature of every engine: completes \a result, the H0 persistence of
+ * \a complex (computeH0Persistence()), with H1 (the standard engine recomputes
+ * everything), reporting progress to \a progress when set. */
+using H1PersistenceFunction = void (*) (const FilteredComplex& complex,
+                                        PersistenceResult& result,
+                                        const ProgressCallback& progress);
+
+/** \brief One row of the engine table. */
+struct PersistenceEngineEntry {
+  PersistenceEngine engine;
+  /** The engine's name on command lines. */
+  const char* name;
+  H1PersistenceFunction add_h1;
+};
+
+/** \brief The engine table, in the order of the enumeration (checked at compile
+ * time): the one place that binds an engine to its name and its function. */
+const std::array<PersistenceEngineEntry, 4>&
+persistenceEngines ();
+
+/** \brief The table's row of \a engine. */
+const PersistenceEngineEntry&
+engineEntry (PersistenceEngine engine);
+
 /** \brief The engine's name on command lines: "standard", "incremental", "fip" or
  * "cohomology". */
 std::string
 engineName (PersistenceEngine engine);
-
-/** \brief All engines, in the order of the enumeration. */
-std::vector<PersistenceEngine>
-allEngines ();
 
 /** \brief Parses an engine name of engineName().
  * \return false when \a name is none of them */
 bool
 parseEngineName (const std::string& name, PersistenceEngine& engine);
 
-/** \brief Persistence pairs of dimensions 0 and 1, essential classes of dimensions
- * 0 and 1 and positive/negative marks of all edges and triangles, by \a engine.
+/** \brief Persistence of dimensions 0 and 1 (the whole result, max_dimension 1) by
+ * \a engine.
  * \param[in] complex the filtered complex
  * \param[in] engine the engine (default: the fastest)
- * \param[in] progress optional callback (units of work done, total)
+ * \param[in] progress optional callback (units of work done, total) of the H1 part
  */
 PersistenceResult
 computePersistence (const FilteredComplex& complex,
@@ -51,8 +71,8 @@ computePersistence (const FilteredComplex& complex,
                     const ProgressCallback& progress = {});
 
 /** \brief Completes \a result, the H0 persistence of \a complex from
- * computeH0Persistence(), with H1 by \a engine (the STANDARD engine recomputes
- * everything), so that a caller can time or use H0 on its own first. */
+ * computeH0Persistence(), with H1 by \a engine, so that a caller can time or use H0
+ * on its own first. */
 void
 addH1Persistence (const FilteredComplex& complex,
                   PersistenceEngine engine,

@@ -21,18 +21,18 @@ namespace tda {
  * \return the input indices of the points in canonical order
  */
 template <typename PointT>
-std::vector<int>
+pcl::Indices
 canonicalOrder (const pcl::PointCloud<PointT>& cloud,
                 const pcl::Indices& indices,
                 std::size_t& skipped)
 {
-  std::vector<int> order;
+  pcl::Indices order;
   order.reserve (indices.size());
   for (const auto index : indices)
     if (pcl::isXYZFinite (cloud[index]))
-      order.push_back (static_cast<int> (index));
+      order.push_back (index);
   skipped = indices.size() - order.size();
-  std::sort (order.begin(), order.end(), [&cloud] (int a, int b) {
+  std::sort (order.begin(), order.end(), [&cloud] (pcl::index_t a, pcl::index_t b) {
     const PointT& p = cloud[a];
     const PointT& q = cloud[b];
     return std::tie (p.x, p.y, p.z, a) < std::tie (q.x, q.y, q.z, b);

@@ -115,7 +115,8 @@ public:
     return memory_limit_;
   }
 
-  /** \brief Sets the number of OpenMP threads (0: OpenMP's default). */
+  /** \brief Sets the number of OpenMP threads of every phase (0: OpenMP's default);
+   * the complex does not depend on it. */
   void
   setNumberOfThreads (unsigned int threads)
   {
@@ -150,6 +151,7 @@ public:
   }
 
 protected:
+  /** \brief The class name, as PCL's classes report it in their messages. */
   const std::string&
   getClassName () const
   {

@@ -2,66 +2,17 @@
 
 #include <pcl/search/search.h>
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/persistence_diagram.h>
-#include <pcl/tda/search/neighbor_graph.h>
+#include <pcl/tda/common/persistence_result.h>
 #include <pcl/pcl_base.h>
 #include <pcl/PointIndices.h>
 
 #include <cstddef>
-#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
 namespace pcl {
 namespace tda {
-
-/** \brief Decides whether a pair of vertices within the search radius is an edge. */
-using EdgeTest = std::function<bool (SimplexIndex, SimplexIndex)>;
-
-/** \brief The minimum spanning forest of the radius graph of \a points: the only
- * edges that H0 of the graph's filtration (edges entering at their lengths) needs,
- * since the negative edges of the elder rule form that forest (thesis Sec 4.1.4).
- *
- * Pairs at distance <= \a radius (length in double precision, as
- * pcl::tda::distance()) that pass \a accept (if given) are the edges; they are found
- * with a uniform grid of cell size \a radius, each pair once, in parallel, and the
- * forest is taken by Filter-Kruskal (Osipov, Sanders, Singler 2009), which sorts
- * only the edges that can still join two components.
- * \param[in] points the points, vertex v at points[v]
- * \param[in] radius the largest edge length (> 0)
- * \param[in] accept optional extra test of a pair within the radius
- * \param[in] threads OpenMP threads (0: OpenMP's default)
- * \param[out] num_graph_edges number of edges of the radius graph
- * \return the forest's edges in filtration order (value, source, target)
- * \throws pcl::BadArgumentException when the radius is not positive or too small
- * for the extent of the points (more than 2^20 cells along an axis) */
-std::vector<FilteredEdge>
-radiusGraphSpanningForest (const std::vector<Point3d>& points,
-                           double radius,
-                           const EdgeTest& accept,
-                           unsigned int threads,
-                           std::size_t& num_graph_edges);
-
-/** \brief Connected components of the radius graph of a complex at a cut distance,
- * read from its H0 persistence (thesis Sec 4.1.5): the points joined, by negative
- * edges of value <= \a cut, to each essential class of the filtration cut there.
- * \param[in] complex the complex (its edges; triangles are ignored)
- * \param[in] h0 the result of computeH0Persistence() on \a complex
- * \param[in] cut the distance at which the components are taken (edges above it are
- * left out; infinity takes every edge)
- * \return every component as sorted input point indices, largest first, equal
- * sizes by smallest index */
-std::vector<pcl::Indices>
-persistentComponents (const FilteredComplex& complex,
-                      const PersistenceResult& h0,
-                      double cut = std::numeric_limits<double>::infinity());
-
-/** \brief The H0 diagram of the thesis' stepped filtration (Sec 4.4.2): every death
- * rounded up to a multiple of \a max_distance / \a steps (0 steps: exact values),
- * zero-length intervals dropped, essential classes with death infinity. */
-PersistenceDiagram
-steppedH0Diagram (const PersistenceResult& h0, double max_distance, unsigned int steps);
 
 /** \brief The automatic cluster distance (see
  * PersistentEuclideanClusterExtraction::setAutoMaxDistance(), which states the rule)
@@ -170,6 +121,21 @@ public:
   getMaxDistance () const
   {
     return max_distance_;
+  }
+
+  /** \brief The name of setMaxDistance() in pcl::EuclideanClusterExtraction, so
+   * that code written for it compiles unchanged. */
+  void
+  setClusterTolerance (double tolerance)
+  {
+    setMaxDistance (tolerance);
+  }
+
+  /** \brief The name of getMaxDistance() in pcl::EuclideanClusterExtraction. */
+  double
+  getClusterTolerance () const
+  {
+    return getMaxDistance();
   }
 
   /** \brief Sets the smallest number of points of a cluster (default 1). */
@@ -350,10 +316,11 @@ public:
   }
 
 protected:
-  std::string
+  /** \brief The class name, as PCL's classes report it in their messages. */
+  const std::string&
   getClassName () const
   {
-    return "PersistentEuclideanClusterExtraction";
+    return class_name_;
   }
 
 private:
@@ -385,6 +352,7 @@ private:
   double chosen_distance_ = 0.0;
   std::size_t num_oversized_clusters_ = 0;
   std::size_t num_edges_ = 0;
+  std::string class_name_ = "PersistentEuclideanClusterExtraction";
 };
 
 } // namespace tda

@@ -3,14 +3,13 @@
 #include <pcl/common/time.h>
 #include <pcl/console/print.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/clique_complex.h>
-#include <pcl/tda/search/neighbor_graph.h>
+#include <pcl/tda/search/radius_edges.h>
+#include <pcl/tda/search/uniform_grid.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/exceptions.h>
-
-#include <omp.h>
-#include <unistd.h>
 
 #include <cmath>
 #include <limits>
@@ -18,34 +17,9 @@
 namespace pcl {
 namespace tda {
 
-namespace detail {
-
-/** Sets the OpenMP thread count for the lifetime of the object (0: unchanged). */
-class OpenMPThreadScope {
-public:
-  explicit OpenMPThreadScope (unsigned int threads) : previous_ (omp_get_max_threads())
-  {
-    if (threads > 0)
-      omp_set_num_threads (static_cast<int> (threads));
-  }
-  ~OpenMPThreadScope() { omp_set_num_threads (previous_); }
-
-private:
-  int previous_;
-};
-
-inline std::size_t
-halfOfPhysicalMemory ()
-{
-  return static_cast<std::size_t> (::sysconf (_SC_PHYS_PAGES)) *
-         static_cast<std::size_t> (::sysconf (_SC_PAGE_SIZE)) / 2;
-}
-
-} // namespace detail
-
 template <typename PointT>
 VietorisRipsBuilder<PointT>::VietorisRipsBuilder()
-: memory_limit_ (detail::halfOfPhysicalMemory())
+: memory_limit_ (physicalMemoryBytes() / 2)
 {}
 
 template <typename PointT>
@@ -108,10 +82,9 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
         max_dimension_);
     return fail();
   }
-  const detail::OpenMPThreadScope thread_scope (threads_);
   pcl::StopWatch watch;
 
-  std::vector<int> order = canonicalOrder (*input_, *indices_, skipped_points_);
+  pcl::Indices order = canonicalOrder (*input_, *indices_, skipped_points_);
   if (skipped_points_ > 0)
     PCL_WARN ("[pcl::tda::%s::compute] Skipped %zu non-finite points.\n",
               getClassName().c_str(),
@@ -127,18 +100,18 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     points[v] = {point.x, point.y, point.z};
   }
 
-  // PCL searches compare squared float distances: widen the radius so that no
-  // point within the exact radius is missed; the exact test comes afterwards.
-  const double search_radius = radius_ * (1.0 + 1e-5);
-  CandidateSearch candidates;
-  std::unique_ptr<UniformGridSearch> grid;
-  std::vector<SimplexIndex> vertex_of_input;
+  // Phase 1: the edges, counted before they are listed.
+  std::vector<FilteredEdge> edges;
   if (search_) {
+    // PCL searches compare squared float distances: widen the radius so that no
+    // point within the exact radius is missed; the exact test comes afterwards.
+    const double search_radius = radius_ * (1.0 + 1e-5);
     search_->setInputCloud (input_, indices_);
-    vertex_of_input.assign (input_->size(), INVALID_SIMPLEX);
+    std::vector<SimplexIndex> vertex_of_input (input_->size(), INVALID_SIMPLEX);
     for (std::size_t v = 0; v < order.size(); ++v)
       vertex_of_input[order[v]] = static_cast<SimplexIndex> (v);
-    candidates = [&] (SimplexIndex vertex, std::vector<SimplexIndex>& out) {
+    const CandidateSearch candidates = [&] (SimplexIndex vertex,
+                                            std::vector<SimplexIndex>& out) {
       pcl::Indices found;
       std::vector<float> squared_distances;
       search_->radiusSearch (
@@ -148,10 +121,16 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
         if (vertex_of_input[index] != INVALID_SIMPLEX)
           out.push_back (vertex_of_input[index]);
     };
+    const std::vector<std::uint64_t> offsets =
+        countEdgesBySearch (points, radius_, candidates, threads_);
+    if (!fitsMemory (offsets.back(), 0, false))
+      return fail();
+    edges = listEdgesBySearch (points, radius_, candidates, offsets, threads_);
   }
   else {
+    std::unique_ptr<UniformGrid> grid;
     try {
-      grid = std::make_unique<UniformGridSearch> (points, radius_);
+      grid = std::make_unique<UniformGrid> (points, radius_);
     }
     catch (const pcl::PCLException& error) {
       PCL_ERROR ("[pcl::tda::%s::compute] %s\n",
@@ -159,40 +138,28 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
                  errorMessage (error).c_str());
       return fail();
     }
-    candidates = [&grid] (SimplexIndex vertex, std::vector<SimplexIndex>& out) {
-      (*grid) (vertex, out);
-    };
+    const std::vector<std::uint64_t> offsets =
+        countRadiusEdges (*grid, points, radius_, AcceptAllPairs{}, threads_);
+    if (!fitsMemory (offsets.back(), 0, false))
+      return fail();
+    edges =
+        listRadiusEdges (*grid, points, radius_, AcceptAllPairs{}, offsets, threads_);
   }
-
-  const std::vector<std::uint32_t> neighbor_counts =
-      countNeighbors (points, radius_, candidates);
-  std::size_t num_edges = 0;
-  for (const auto count : neighbor_counts)
-    num_edges += count;
-  if (!fitsMemory (num_edges, 0, false))
-    return fail();
-  std::vector<FilteredEdge> edges;
-  {
-    const NeighborGraph graph =
-        fillNeighborGraph (points, radius_, candidates, neighbor_counts);
-    timings_.neighbor_search = watch.getTimeSeconds();
-    watch.reset();
-    edges = sortedEdges (graph);
-  }
+  timings_.neighbor_search = watch.getTimeSeconds();
+  watch.reset();
+  sortEdges (edges, threads_);
   timings_.edges = watch.getTimeSeconds();
   watch.reset();
 
+  // Phase 2: the triangles, counted before they are listed.
   std::vector<FilteredTriangle> triangles;
   if (max_dimension_ == 2) {
     const EdgeAdjacency adjacency = buildEdgeAdjacency (points.size(), edges);
-    const std::vector<std::uint32_t> triangle_counts =
-        countTriangles (edges, adjacency);
-    std::size_t num_triangles = 0;
-    for (const auto count : triangle_counts)
-      num_triangles += count;
-    if (!fitsMemory (num_edges, num_triangles, true))
+    const std::vector<std::uint64_t> offsets =
+        countTriangles (edges, adjacency, threads_);
+    if (!fitsMemory (edges.size(), offsets.back(), true))
       return fail();
-    triangles = fillTriangles (edges, adjacency, triangle_counts);
+    triangles = fillTriangles (edges, adjacency, offsets, threads_);
   }
   timings_.triangles = watch.getTimeSeconds();
 

@@ -4,6 +4,8 @@
 #include <pcl/console/print.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>
+#include <pcl/tda/common/persistent_components.h>
+#include <pcl/tda/search/radius_edges.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 
@@ -85,7 +87,7 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
       return false;
     }
     if (pcl_distance_test_) {
-      const std::vector<int>& point_of = complex.pointIndices();
+      const pcl::Indices& point_of = complex.pointIndices();
       std::vector<FilteredEdge> edges;
       for (const FilteredEdge& edge : complex.edges())
         if (passesPCLDistanceTest (point_of[edge.source], point_of[edge.target]))
@@ -97,25 +99,28 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
     return true;
   }
 
-  std::vector<int> point_of;
+  pcl::Indices point_of;
   std::vector<Point3d> points;
   point_of.reserve (indices_->size());
   points.reserve (indices_->size());
   for (const auto index : *indices_) {
     const PointT& point = (*input_)[index];
     if (pcl::isXYZFinite (point)) {
-      point_of.push_back (static_cast<int> (index));
+      point_of.push_back (index);
       points.push_back ({point.x, point.y, point.z});
     }
   }
-  EdgeTest accept;
-  if (pcl_distance_test_)
-    accept = [this, &point_of] (SimplexIndex a, SimplexIndex b) {
-      return passesPCLDistanceTest (point_of[a], point_of[b]);
-    };
   try {
-    std::vector<FilteredEdge> forest =
-        radiusGraphSpanningForest (points, radius, accept, threads_, num_edges_);
+    std::vector<FilteredEdge> forest;
+    if (pcl_distance_test_) {
+      const auto accept = [this, &point_of] (SimplexIndex a, SimplexIndex b) {
+        return passesPCLDistanceTest (point_of[a], point_of[b]);
+      };
+      forest = radiusGraphSpanningForest (points, radius, accept, threads_, num_edges_);
+    }
+    else
+      forest = radiusGraphSpanningForest (
+          points, radius, AcceptAllPairs{}, threads_, num_edges_);
     complex = FilteredComplex::adoptValidParts (
         points.size(), std::move (forest), {}, std::move (point_of));
   }
@@ -171,7 +176,7 @@ PersistentEuclideanClusterExtraction<PointT>::extract (
   }
 
   const PersistenceResult h0 = computeH0Persistence (complex);
-  diagram_ = steppedH0Diagram (h0, max_distance_, filtration_steps_);
+  diagram_ = steppedH0Diagram (complex, h0, max_distance_, filtration_steps_);
   chosen_distance_ = max_distance_;
   if (auto_max_distance_)
     chosen_distance_ = chooseClusterDistance (

@@ -1,4 +1,6 @@
-#include <pcl/tda/apps/synthetic_scenes.h>
+#include <pcl/tda/generators/parameter_checks.h>
+#include <pcl/tda/generators/random_sampling.h>
+#include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/exceptions.h>
 
 #include <Eigen/Geometry>
@@ -6,24 +8,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
+#include <utility>
 
 namespace pcl {
 namespace tda {
 namespace {
 
-constexpr double PI = 3.14159265358979323846;
-
-/** Noise is Gaussian, redrawn beyond this many standard deviations. */
-constexpr double NOISE_TRUNCATION = 4.0;
 /** Colour noise is Gaussian, redrawn beyond this many standard deviations. */
 constexpr double COLOUR_NOISE_TRUNCATION = 3.0;
-
-/** suggested_radius = RADIUS_PER_SPACING * h + RADIUS_PER_SIGMA * sigma, where h is
- * the sampling cell size (arc length per point on the circle, square root of the
- * area per point on surfaces). Calibrated with Ripser (see the tests). */
-constexpr double RADIUS_PER_SPACING = 4.0;
-constexpr double RADIUS_PER_SIGMA = 7.0;
 
 /** Tabletop object sizes, in metres. */
 constexpr double BOX_MIN_SIDE = 0.06, BOX_MAX_SIDE = 0.16;
@@ -51,346 +43,6 @@ const std::array<Colour, MAX_TABLETOP_OBJECTS> OBJECT_PALETTE = {{{210, 40, 40},
                                                                   {40, 190, 200},
                                                                   {250, 140, 20},
                                                                   {235, 235, 235}}};
-const Colour CIRCLE_COLOUR = {40, 80, 210};
-const Colour TORUS_COLOUR = {250, 140, 20};
-const Colour SPHERE_COLOUR = {40, 170, 60};
-
-/** Random numbers from std::mt19937_64 with our own transforms, so that a seed
- * gives the same numbers with any standard library. */
-class Random {
-public:
-  explicit Random (std::uint64_t seed) : engine_ (seed) {}
-
-  /** Uniform in [0, 1). */
-  double
-  uniform ()
-  {
-    return static_cast<double> (engine_() >> 11) * 0x1.0p-53;
-  }
-
-  /** Uniform in [a, b). */
-  double
-  uniform (double a, double b)
-  {
-    return a + (b - a) * uniform();
-  }
-
-  /** Uniform integer in [0, n). */
-  std::size_t
-  index (std::size_t n)
-  {
-    return std::min (static_cast<std::size_t> (uniform() * static_cast<double> (n)),
-                     n - 1);
-  }
-
-  /** Standard normal (Box-Muller). */
-  double
-  normal ()
-  {
-    const double u = 1.0 - uniform(); // (0, 1]
-    return std::sqrt (-2.0 * std::log (u)) * std::cos (2.0 * PI * uniform());
-  }
-
-  /** Normal of standard deviation sigma, redrawn beyond truncation * sigma. */
-  double
-  truncatedNormal (double sigma, double truncation)
-  {
-    if (sigma == 0.0)
-      return 0.0;
-    for (;;) {
-      const double x = normal();
-      if (std::abs (x) <= truncation)
-        return sigma * x;
-    }
-  }
-
-  /** Isotropic 3D normal of standard deviation sigma per axis, redrawn when its
-   * length exceeds NOISE_TRUNCATION * sigma. */
-  Eigen::Vector3d
-  truncatedNormal3 (double sigma)
-  {
-    if (sigma == 0.0)
-      return Eigen::Vector3d::Zero();
-    for (;;) {
-      const Eigen::Vector3d x (normal(), normal(), normal());
-      if (x.norm() <= NOISE_TRUNCATION)
-        return sigma * x;
-    }
-  }
-
-private:
-  std::mt19937_64 engine_;
-};
-
-/** A point on a surface with its outward unit normal. */
-struct SurfaceSample {
-  Eigen::Vector3d point;
-  Eigen::Vector3d normal;
-};
-
-/** Splits total into counts proportional to weights (largest remainder, ties to the
- * lower index), so that the counts sum to total exactly. */
-std::vector<std::size_t>
-apportion (const std::vector<double>& weights, std::size_t total)
-{
-  double sum = 0.0;
-  for (const double w : weights)
-    sum += w;
-  std::vector<std::size_t> counts (weights.size());
-  std::vector<std::pair<double, std::size_t>> remainders (weights.size());
-  std::size_t assigned = 0;
-  for (std::size_t i = 0; i < weights.size(); ++i) {
-    const double exact = static_cast<double> (total) * weights[i] / sum;
-    counts[i] = static_cast<std::size_t> (std::floor (exact));
-    assigned += counts[i];
-    remainders[i] = {exact - static_cast<double> (counts[i]), i};
-  }
-  std::stable_sort (remainders.begin(),
-                    remainders.end(),
-                    [] (const auto& a, const auto& b) { return a.first > b.first; });
-  for (std::size_t i = 0; assigned < total; ++i, ++assigned)
-    ++counts[remainders[i % remainders.size()].second];
-  return counts;
-}
-
-/** Number of grid cells of size at most spacing along a length (at least one). */
-std::size_t
-cellCount (double length, double spacing)
-{
-  return std::max<std::size_t> (
-      1, static_cast<std::size_t> (std::ceil (length / spacing)));
-}
-
-/** Exactly count points on a sphere of the given radius centred at the origin,
- * area-uniform: rings of equal polar width get points in proportion to their area,
- * each point drawn uniformly in its own cell of the ring. */
-std::vector<SurfaceSample>
-sampleSphere (double radius, std::size_t count, Random& random)
-{
-  const std::size_t rows = std::max<std::size_t> (
-      1, static_cast<std::size_t> (std::lround (std::sqrt (PI * count / 4.0))));
-  std::vector<double> weights (rows);
-  for (std::size_t j = 0; j < rows; ++j)
-    weights[j] = std::cos (PI * j / rows) - std::cos (PI * (j + 1) / rows);
-  const std::vector<std::size_t> per_row = apportion (weights, count);
-  std::vector<SurfaceSample> samples;
-  samples.reserve (count);
-  for (std::size_t j = 0; j < rows; ++j) {
-    const double z_top = std::cos (PI * j / rows);
-    const double z_bottom = std::cos (PI * (j + 1) / rows);
-    for (std::size_t k = 0; k < per_row[j]; ++k) {
-      const double z = random.uniform (z_bottom, z_top); // area-uniform in the ring
-      const double theta = 2.0 * PI * (k + random.uniform()) / per_row[j];
-      const double rho = std::sqrt (std::max (0.0, 1.0 - z * z));
-      const Eigen::Vector3d n (rho * std::cos (theta), rho * std::sin (theta), z);
-      samples.push_back ({radius * n, n});
-    }
-  }
-  return samples;
-}
-
-/** Points on the disc of the given radius in the plane z = 0 (normal +z), one per
- * cell of about spacing x spacing: rings of equal width, cells of equal area. */
-std::vector<SurfaceSample>
-sampleDisc (double radius, double spacing, Random& random)
-{
-  const std::size_t rings = cellCount (radius, spacing);
-  std::vector<SurfaceSample> samples;
-  for (std::size_t j = 0; j < rings; ++j) {
-    const double inner = radius * j / rings;
-    const double outer = radius * (j + 1) / rings;
-    const std::size_t cells =
-        cellCount (PI * (outer * outer - inner * inner), spacing * spacing);
-    for (std::size_t k = 0; k < cells; ++k) {
-      const double rho = std::sqrt (random.uniform (inner * inner, outer * outer));
-      const double theta = 2.0 * PI * (k + random.uniform()) / cells;
-      samples.push_back (
-          {Eigen::Vector3d (rho * std::cos (theta), rho * std::sin (theta), 0.0),
-           Eigen::Vector3d::UnitZ()});
-    }
-  }
-  return samples;
-}
-
-/** Points on the rectangle origin + s * u + t * v, s, t in [0, 1], one per cell of
- * a grid of cells of at most spacing x spacing. */
-void
-sampleRectangle (const Eigen::Vector3d& origin,
-                 const Eigen::Vector3d& u,
-                 const Eigen::Vector3d& v,
-                 const Eigen::Vector3d& normal,
-                 double spacing,
-                 Random& random,
-                 std::vector<SurfaceSample>& samples)
-{
-  const std::size_t nu = cellCount (u.norm(), spacing);
-  const std::size_t nv = cellCount (v.norm(), spacing);
-  for (std::size_t i = 0; i < nu; ++i)
-    for (std::size_t j = 0; j < nv; ++j) {
-      const double s = (i + random.uniform()) / nu;
-      const double t = (j + random.uniform()) / nv;
-      samples.push_back ({origin + s * u + t * v, normal});
-    }
-}
-
-void
-checkShapeArguments (std::size_t num_points, float noise_sigma, const char* name)
-{
-  if (num_points == 0)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": the number of points must be positive");
-  if (!std::isfinite (noise_sigma) || noise_sigma < 0.0f)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": noise sigma must be finite and >= 0, not "
-                              << noise_sigma);
-}
-
-void
-checkLength (float value, const char* name, const char* what)
-{
-  if (!std::isfinite (value) || value <= 0.0f)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": " << what << " must be finite and > 0, not "
-                              << value);
-}
-
-/** The suggested Vietoris-Rips radius for cell size h and noise sigma; throws when
- * it exceeds the largest radius at which the shape's holes certainly survive. */
-float
-suggestedRadius (double h, double sigma, double limit, const char* name)
-{
-  const double radius = RADIUS_PER_SPACING * h + RADIUS_PER_SIGMA * sigma;
-  if (radius > limit)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": too few points or too much noise for the shape "
-                                 "(the Vietoris-Rips radius needed, "
-                              << radius << ", exceeds " << limit
-                              << "); add points or lower the noise");
-  return static_cast<float> (radius);
-}
-
-/** Moves the samples by truncated Gaussian noise and stores them as one shape. */
-SyntheticShape
-makeShape (const std::vector<Eigen::Vector3d>& points,
-           double sigma,
-           Random& random,
-           const Colour& colour,
-           int beta0,
-           int beta1,
-           float suggested_radius)
-{
-  SyntheticShape shape;
-  shape.cloud.reset (new pcl::PointCloud<pcl::PointXYZRGBL>);
-  shape.cloud->reserve (points.size());
-  for (const Eigen::Vector3d& p : points) {
-    const Eigen::Vector3d q = p + random.truncatedNormal3 (sigma);
-    pcl::PointXYZRGBL point;
-    point.x = static_cast<float> (q.x());
-    point.y = static_cast<float> (q.y());
-    point.z = static_cast<float> (q.z());
-    point.r = colour[0];
-    point.g = colour[1];
-    point.b = colour[2];
-    point.label = SHAPE_LABEL;
-    shape.cloud->push_back (point);
-  }
-  shape.beta0 = beta0;
-  shape.beta1 = beta1;
-  shape.suggested_radius = suggested_radius;
-  return shape;
-}
-
-} // namespace
-
-SyntheticShape
-generateCircle (const CircleParameters& parameters)
-{
-  const char* name = "generateCircle";
-  checkShapeArguments (parameters.num_points, parameters.noise_sigma, name);
-  checkLength (parameters.radius, name, "radius");
-  const double radius = parameters.radius;
-  const std::size_t n = parameters.num_points;
-  const float suggested = suggestedRadius (
-      2.0 * PI * radius / n, parameters.noise_sigma, radius / 2.0, name);
-
-  Random random (parameters.seed);
-  std::vector<Eigen::Vector3d> points (n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const double theta = 2.0 * PI * (i + random.uniform()) / n;
-    points[i] =
-        Eigen::Vector3d (radius * std::cos (theta), radius * std::sin (theta), 0.0);
-  }
-  return makeShape (
-      points, parameters.noise_sigma, random, CIRCLE_COLOUR, 1, 1, suggested);
-}
-
-SyntheticShape
-generateTorus (const TorusParameters& parameters)
-{
-  const char* name = "generateTorus";
-  checkShapeArguments (parameters.num_points, parameters.noise_sigma, name);
-  checkLength (parameters.major_radius, name, "major radius");
-  checkLength (parameters.minor_radius, name, "minor radius");
-  if (parameters.minor_radius >= parameters.major_radius)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": the minor radius (" << parameters.minor_radius
-                              << ") must be below the major radius ("
-                              << parameters.major_radius << ")");
-  const double big = parameters.major_radius;
-  const double small = parameters.minor_radius;
-  const std::size_t n = parameters.num_points;
-  const double h = std::sqrt (4.0 * PI * PI * big * small / n);
-  const float suggested =
-      suggestedRadius (h, parameters.noise_sigma, std::min (small, big - small), name);
-
-  // Rings of equal width around the tube, points in proportion to ring area.
-  const std::size_t rows = std::max<std::size_t> (
-      3, static_cast<std::size_t> (std::lround (2.0 * PI * small / h)));
-  std::vector<double> weights (rows);
-  for (std::size_t j = 0; j < rows; ++j) {
-    const double phi0 = 2.0 * PI * j / rows;
-    const double phi1 = 2.0 * PI * (j + 1) / rows;
-    weights[j] = big * (phi1 - phi0) + small * (std::sin (phi1) - std::sin (phi0));
-  }
-  const std::vector<std::size_t> per_row = apportion (weights, n);
-
-  Random random (parameters.seed);
-  std::vector<Eigen::Vector3d> points;
-  points.reserve (n);
-  for (std::size_t j = 0; j < rows; ++j)
-    for (std::size_t k = 0; k < per_row[j]; ++k) {
-      const double phi = 2.0 * PI * (j + random.uniform()) / rows;
-      const double theta = 2.0 * PI * (k + random.uniform()) / per_row[j];
-      const double rho = big + small * std::cos (phi);
-      points.emplace_back (
-          rho * std::cos (theta), rho * std::sin (theta), small * std::sin (phi));
-    }
-  return makeShape (
-      points, parameters.noise_sigma, random, TORUS_COLOUR, 1, 2, suggested);
-}
-
-SyntheticShape
-generateSphere (const SphereParameters& parameters)
-{
-  const char* name = "generateSphere";
-  checkShapeArguments (parameters.num_points, parameters.noise_sigma, name);
-  checkLength (parameters.radius, name, "radius");
-  const double radius = parameters.radius;
-  const std::size_t n = parameters.num_points;
-  const double h = std::sqrt (4.0 * PI * radius * radius / n);
-  const float suggested =
-      suggestedRadius (h, parameters.noise_sigma, radius / 2.0, name);
-
-  Random random (parameters.seed);
-  std::vector<Eigen::Vector3d> points;
-  points.reserve (n);
-  for (const SurfaceSample& sample : sampleSphere (radius, n, random))
-    points.push_back (sample.point);
-  return makeShape (
-      points, parameters.noise_sigma, random, SPHERE_COLOUR, 1, 0, suggested);
-}
-
-namespace {
 
 /** Narrows [t0, t1] to the parameters t at which p + t * d lies strictly inside the
  * slab |x| < half; false when nothing is left. */
@@ -482,7 +134,7 @@ struct Primitive {
   /** One point per cell of about spacing x spacing on every surface except a
    * bottom resting on the table, with outward normals, in world coordinates. */
   std::vector<SurfaceSample>
-  sample (double spacing, Random& random) const
+  sample (double spacing, PortableRandom& random) const
   {
     std::vector<SurfaceSample> local;
     switch (type) {
@@ -502,11 +154,11 @@ struct Primitive {
     case PrimitiveType::CYLINDER: {
       const double radius = half.x();
       const std::size_t around =
-          std::max<std::size_t> (3, cellCount (2.0 * PI * radius, spacing));
+          std::max<std::size_t> (3, cellCount (2.0 * M_PI * radius, spacing));
       const std::size_t along = cellCount (2.0 * half.z(), spacing);
       for (std::size_t i = 0; i < around; ++i)
         for (std::size_t j = 0; j < along; ++j) {
-          const double theta = 2.0 * PI * (i + random.uniform()) / around;
+          const double theta = 2.0 * M_PI * (i + random.uniform()) / around;
           const double z = half.z() * (2.0 * (j + random.uniform()) / along - 1.0);
           const Eigen::Vector3d n (std::cos (theta), std::sin (theta), 0.0);
           local.push_back ({radius * n + z * Eigen::Vector3d::UnitZ(), n});
@@ -519,7 +171,7 @@ struct Primitive {
     }
     case PrimitiveType::SPHERE: {
       const double radius = half.x();
-      const double area = 4.0 * PI * radius * radius;
+      const double area = 4.0 * M_PI * radius * radius;
       local = sampleSphere (radius, cellCount (area, spacing * spacing), random);
       break;
     }
@@ -535,7 +187,7 @@ struct Primitive {
 
 /** Draws the type, size and yaw of an object (position left at the origin). */
 Primitive
-drawPrimitive (Random& random)
+drawPrimitive (PortableRandom& random)
 {
   Primitive primitive;
   primitive.type = static_cast<PrimitiveType> (random.index (3));
@@ -546,7 +198,7 @@ drawPrimitive (Random& random)
         0.5 * Eigen::Vector3d (random.uniform (BOX_MIN_SIDE, BOX_MAX_SIDE),
                                random.uniform (BOX_MIN_SIDE, BOX_MAX_SIDE),
                                random.uniform (BOX_MIN_HEIGHT, BOX_MAX_HEIGHT));
-    primitive.yaw = random.uniform (0.0, PI);
+    primitive.yaw = random.uniform (0.0, M_PI);
     break;
   case PrimitiveType::CYLINDER: {
     const double radius = random.uniform (CYLINDER_MIN_RADIUS, CYLINDER_MAX_RADIUS);
@@ -571,7 +223,7 @@ placeObjects (std::size_t count,
               double half_width,
               double half_depth,
               double separation,
-              Random& random,
+              PortableRandom& random,
               std::vector<Primitive>& objects)
 {
   objects.clear();
@@ -652,14 +304,8 @@ checkTabletopParameters (const TabletopParameters& parameters)
                          name << ": point spacing " << parameters.point_spacing
                               << " m gives " << table_samples
                               << " table points, more than " << MAX_TABLE_SAMPLES);
-  if (!std::isfinite (parameters.noise_sigma) || parameters.noise_sigma < 0.0f)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": noise sigma must be finite and >= 0, not "
-                              << parameters.noise_sigma);
-  if (!std::isfinite (parameters.colour_noise) || parameters.colour_noise < 0.0f)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": colour noise must be finite and >= 0, not "
-                              << parameters.colour_noise);
+  checkNonNegative (parameters.noise_sigma, name, "noise sigma");
+  checkNonNegative (parameters.colour_noise, name, "colour noise");
   if (!(parameters.dropout >= 0.0f && parameters.dropout < 1.0f))
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          name << ": dropout must be in [0, 1), not "
@@ -673,7 +319,7 @@ checkTabletopParameters (const TabletopParameters& parameters)
 }
 
 std::uint8_t
-noisyChannel (std::uint8_t value, double sigma, Random& random)
+noisyChannel (std::uint8_t value, double sigma, PortableRandom& random)
 {
   const double noisy = value + random.truncatedNormal (sigma, COLOUR_NOISE_TRUNCATION);
   return static_cast<std::uint8_t> (std::clamp (std::lround (noisy), 0L, 255L));
@@ -685,7 +331,7 @@ TabletopScene
 generateTabletopScene (const TabletopParameters& parameters)
 {
   checkTabletopParameters (parameters);
-  Random random (parameters.seed);
+  PortableRandom random (parameters.seed);
   const double half_width = 0.5 * parameters.table_width;
   const double half_depth = 0.5 * parameters.table_depth;
   const double spacing = parameters.point_spacing;

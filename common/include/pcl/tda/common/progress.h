@@ -1,0 +1,23 @@
+#pragma once
+
+#include <cstddef>
+#include <functional>
+
+namespace pcl {
+namespace tda {
+
+/** \brief Called now and then by long computations with the units of work done so
+ * far and the total, e.g. to drive a ProgressBar. */
+using ProgressCallback = std::function<void (std::size_t done, std::size_t total)>;
+
+/** \brief Tells \a progress (when set) that unit \a index of \a total is done, every
+ * 4096 units and at the last one, so that a tight loop can call it every time. */
+inline void
+reportProgress (const ProgressCallback& progress, std::size_t index, std::size_t total)
+{
+  if (progress && (index % 4096 == 0 || index + 1 == total))
+    progress (index + 1, total);
+}
+
+} // namespace tda
+} // namespace pcl

@@ -1,0 +1,29 @@
+#pragma once
+
+#include <pcl/tda/common/filtered_complex.h>
+
+#include <cstddef>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief The minimum spanning forest of a weighted graph by Kruskal with filtering
+ * (Osipov, Sanders, Singler 2009): split the edges at the median value, take the
+ * forest of the lighter half, drop the heavier edges that no longer join two
+ * components, recurse on the rest. Only edges that can still join two components
+ * get sorted, which on radius graphs of point clouds is a small fraction.
+ *
+ * Its edges are the negative edges of the elder rule, so the H0 persistence of the
+ * graph's filtration equals that of the forest (thesis Sec 4.1.4): clustering and
+ * region growing build the forest and never the whole graph.
+ * \param[in] num_vertices number of vertices (edge ends are below it)
+ * \param[in] edges the graph's edges, in any order (reordered)
+ * \return the forest's edges in filtration order (edgeFiltrationLess()); of equal
+ * values, those of the filtration order win, so the forest is that of the elder rule
+ */
+std::vector<FilteredEdge>
+minimumSpanningForest (std::size_t num_vertices, std::vector<FilteredEdge>& edges);
+
+} // namespace tda
+} // namespace pcl

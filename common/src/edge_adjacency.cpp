@@ -1,0 +1,36 @@
+#include <pcl/tda/common/edge_adjacency.h>
+
+namespace pcl {
+namespace tda {
+
+EdgeAdjacency
+buildEdgeAdjacency (std::size_t num_vertices,
+                    const std::vector<FilteredEdge>& edges,
+                    const EdgeFilter& keep)
+{
+  EdgeAdjacency adjacency;
+  adjacency.offsets.assign (num_vertices + 1, 0);
+  for (SimplexIndex e = 0; e < edges.size(); ++e)
+    if (!keep || keep (e)) {
+      ++adjacency.offsets[edges[e].source + 1];
+      ++adjacency.offsets[edges[e].target + 1];
+    }
+  for (std::size_t v = 0; v < num_vertices; ++v)
+    adjacency.offsets[v + 1] += adjacency.offsets[v];
+  adjacency.entries.resize (adjacency.offsets.back());
+  adjacency.positions.resize (edges.size());
+  std::vector<std::uint64_t> next (adjacency.offsets.begin(),
+                                   adjacency.offsets.end() - 1);
+  for (SimplexIndex e = 0; e < edges.size(); ++e) {
+    const FilteredEdge& edge = edges[e];
+    adjacency.positions[e] = {next[edge.source], next[edge.target]};
+    if (keep && !keep (e))
+      continue;
+    adjacency.entries[next[edge.source]++] = {edge.target, e};
+    adjacency.entries[next[edge.target]++] = {edge.source, e};
+  }
+  return adjacency;
+}
+
+} // namespace tda
+} // namespace pcl

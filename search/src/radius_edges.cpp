@@ -1,0 +1,97 @@
+#include <pcl/tda/search/radius_edges.h>
+
+#include <omp.h>
+#include <parallel/algorithm>
+
+#include <algorithm>
+
+namespace pcl {
+namespace tda {
+
+int
+resolveThreads (unsigned int threads)
+{
+  return threads > 0 ? static_cast<int> (threads) : omp_get_max_threads();
+}
+
+namespace {
+
+/** The candidates of \a vertex that are later vertices within \a radius, sorted. */
+void
+findLaterNeighbors (const std::vector<Point3d>& points,
+                    double radius,
+                    const CandidateSearch& search,
+                    SimplexIndex vertex,
+                    std::vector<SimplexIndex>& neighbors)
+{
+  search (vertex, neighbors);
+  const auto outside = [&] (SimplexIndex j) {
+    return j <= vertex || !withinRadius (points[vertex], points[j], radius);
+  };
+  neighbors.erase (std::remove_if (neighbors.begin(), neighbors.end(), outside),
+                   neighbors.end());
+  std::sort (neighbors.begin(), neighbors.end());
+}
+
+} // namespace
+
+std::vector<std::uint64_t>
+countEdgesBySearch (const std::vector<Point3d>& points,
+                    double radius,
+                    const CandidateSearch& search,
+                    unsigned int threads)
+{
+  const auto n = static_cast<std::int64_t> (points.size());
+  std::vector<std::uint64_t> offsets (points.size() + 1, 0);
+#pragma omp parallel num_threads(resolveThreads(threads))
+  {
+    std::vector<SimplexIndex> neighbors;
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t i = 0; i < n; ++i) {
+      findLaterNeighbors (
+          points, radius, search, static_cast<SimplexIndex> (i), neighbors);
+      offsets[i + 1] = neighbors.size();
+    }
+  }
+  for (std::size_t i = 0; i < points.size(); ++i)
+    offsets[i + 1] += offsets[i];
+  return offsets;
+}
+
+std::vector<FilteredEdge>
+listEdgesBySearch (const std::vector<Point3d>& points,
+                   double radius,
+                   const CandidateSearch& search,
+                   const std::vector<std::uint64_t>& offsets,
+                   unsigned int threads)
+{
+  std::vector<FilteredEdge> edges (offsets.back());
+  const auto n = static_cast<std::int64_t> (points.size());
+#pragma omp parallel num_threads(resolveThreads(threads))
+  {
+    std::vector<SimplexIndex> neighbors;
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t i = 0; i < n; ++i) {
+      const auto vertex = static_cast<SimplexIndex> (i);
+      findLaterNeighbors (points, radius, search, vertex, neighbors);
+      std::uint64_t position = offsets[i];
+      for (const SimplexIndex j : neighbors)
+        edges[position++] = {vertex, j, distance (points[i], points[j])};
+    }
+  }
+  return edges;
+}
+
+void
+sortEdges (std::vector<FilteredEdge>& edges, unsigned int threads)
+{
+  // A strict total order: the parallel sort's result does not depend on the threads.
+  __gnu_parallel::sort (
+      edges.begin(),
+      edges.end(),
+      edgeFiltrationLess,
+      __gnu_parallel::default_parallel_tag (resolveThreads (threads)));
+}
+
+} // namespace tda
+} // namespace pcl
