@@ -6,7 +6,7 @@ BUILD_TYPE ?= Release
 CMAKE_ARGS ?=
 JOBS ?= $(shell nproc)
 
-.PHONY: all deps build demo test clean
+.PHONY: all deps build demo test doc format-check clean
 
 all: build
 
@@ -22,6 +22,14 @@ demo: build
 
 test: build
 	cd $(BUILD_DIR) && ctest --output-on-failure -j$(JOBS)
+
+# The API reference of every public header (build/doc/html); a Doxygen warning fails.
+doc: deps
+	doxygen doc/Doxyfile
+
+# Every tracked C++ file formatted by .clang-format.
+format-check: deps
+	bash scripts/check_format.sh
 
 clean:
 	rm -rf $(BUILD_DIR) out

@@ -1,7 +1,8 @@
 # pcl_tda_add_library(<module> SOURCES <src>... LINK <target>...)
 #
 # Adds the shared library pcl_tda_<module> of one module folder, with its public
-# headers under <module>/include, exported as pcl_tda::<module>.
+# headers under <module>/include, exported as pcl_tda::<module>, the package
+# component <module> (its own export set, so that a user finds only what it links).
 function(pcl_tda_add_library module)
   cmake_parse_arguments(ARG "" "" "SOURCES;LINK" ${ARGN})
   set(target pcl_tda_${module})
@@ -13,7 +14,8 @@ function(pcl_tda_add_library module)
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/pcl_tda>)
   target_link_libraries(${target} PUBLIC ${ARG_LINK})
-  install(TARGETS ${target} EXPORT pcl_tdaTargets
+  set_property(GLOBAL APPEND PROPERTY PCL_TDA_MODULES ${module})
+  install(TARGETS ${target} EXPORT pcl_tda_${module}Targets
           LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
           ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
           RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})

@@ -7,6 +7,7 @@ packages=(
   cmake g++ make pkg-config          # build
   libpcl-dev libeigen3-dev libboost-dev # libraries
   libgtest-dev libbenchmark-dev ccache  # tests and build speed
+  clang-format doxygen                  # format check and API reference
   ripser libphat-dev libgudhi-dev time # reference tools and timing, for tests and benchmarks
 )
 

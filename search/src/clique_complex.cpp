@@ -2,6 +2,7 @@
 #include <pcl/tda/search/radius_edges.h>
 
 #include <algorithm>
+#include <numeric>
 
 namespace pcl {
 namespace tda {
@@ -22,8 +23,7 @@ countTriangles (const std::vector<FilteredEdge>& edges,
                       true,
                       [&] (SimplexIndex, SimplexIndex) { ++offsets[e + 1]; });
   }
-  for (std::size_t e = 0; e < edges.size(); ++e)
-    offsets[e + 1] += offsets[e];
+  std::partial_sum (offsets.begin(), offsets.end(), offsets.begin());
   return offsets;
 }
 

@@ -4,6 +4,7 @@
 #include <parallel/algorithm>
 
 #include <algorithm>
+#include <numeric>
 
 namespace pcl {
 namespace tda {
@@ -53,8 +54,7 @@ countEdgesBySearch (const std::vector<Point3d>& points,
       offsets[i + 1] = neighbors.size();
     }
   }
-  for (std::size_t i = 0; i < points.size(); ++i)
-    offsets[i + 1] += offsets[i];
+  std::partial_sum (offsets.begin(), offsets.end(), offsets.begin());
   return offsets;
 }
 

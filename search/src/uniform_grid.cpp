@@ -1,3 +1,4 @@
+#include <pcl/tda/search/radius_edges.h>
 #include <pcl/tda/search/uniform_grid.h>
 #include <pcl/exceptions.h>
 
@@ -8,7 +9,9 @@
 namespace pcl {
 namespace tda {
 
-UniformGrid::UniformGrid (const std::vector<Point3d>& points, double cell_size)
+UniformGrid::UniformGrid (const std::vector<Point3d>& points,
+                          double cell_size,
+                          unsigned int threads)
 {
   if (!(cell_size > 0.0) || !std::isfinite (cell_size))
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
@@ -65,7 +68,7 @@ UniformGrid::UniformGrid (const std::vector<Point3d>& points, double cell_size)
   };
   runs_.resize (cell_keys.size());
   const auto num_cells = static_cast<std::int64_t> (cell_keys.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) num_threads(resolveThreads(threads))
   for (std::int64_t c = 0; c < num_cells; ++c) {
     const auto [x, y, z] = cell_keys[c];
     // Cell (x, y, z + 1), when there is one, is the next cell: its run ends the first.

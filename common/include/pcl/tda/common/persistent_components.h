@@ -12,9 +12,8 @@ namespace tda {
 
 /** \brief Connected components of a complex's 1-skeleton at a cut value, read from
  * its H0 persistence (thesis Sec 4.1.5): the points joined, by negative edges of
- * value <= \a cut, to each essential class of the filtration cut there. The clusters
- * of PersistentEuclideanClusterExtraction and the regions of
- * PersistentRegionGrowingRGB.
+ * value <= \a cut, to each essential class of the filtration cut there: the clusters
+ * of PersistentEuclideanClusterExtraction.
  * \param[in] complex the complex (its edges and point indices; triangles are
  * ignored)
  * \param[in] h0 its persistence (computeH0Persistence() or any engine)

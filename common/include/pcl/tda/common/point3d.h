@@ -6,8 +6,8 @@
 namespace pcl {
 namespace tda {
 
-/** \brief A point of R^3 in double precision, as every complex builder (CPU and gpu/)
- * measures distances. */
+/** \brief A point of R^3 in double precision, as the complex builders
+ * measure distances. */
 using Point3d = std::array<double, 3>;
 
 /** \brief Euclidean distance of two points: the filtration value of an edge. */

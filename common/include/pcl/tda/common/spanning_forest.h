@@ -15,8 +15,8 @@ namespace tda {
  * get sorted, which on radius graphs of point clouds is a small fraction.
  *
  * Its edges are the negative edges of the elder rule, so the H0 persistence of the
- * graph's filtration equals that of the forest (thesis Sec 4.1.4): clustering and
- * region growing build the forest and never the whole graph.
+ * graph's filtration equals that of the forest (thesis Sec 4.1.4): clustering keeps
+ * only the forest of its radius graph, never the sorted graph or a complex.
  * \param[in] num_vertices number of vertices (edge ends are below it)
  * \param[in] edges the graph's edges, in any order (reordered)
  * \return the forest's edges in filtration order (edgeFiltrationLess()); of equal

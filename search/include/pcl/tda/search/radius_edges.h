@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <numeric>
 #include <vector>
 
 namespace pcl {
@@ -54,8 +55,7 @@ countRadiusEdges (const UniformGrid& grid,
     });
     offsets[c + 1] = count;
   }
-  for (std::size_t c = 0; c < grid.numCells(); ++c)
-    offsets[c + 1] += offsets[c];
+  std::partial_sum (offsets.begin(), offsets.end(), offsets.begin());
   return offsets;
 }
 
@@ -133,7 +133,7 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
                            unsigned int threads,
                            std::size_t& num_graph_edges)
 {
-  const UniformGrid grid (points, radius);
+  const UniformGrid grid (points, radius, threads);
   const std::vector<std::uint64_t> offsets =
       countRadiusEdges (grid, points, radius, accept, threads);
   num_graph_edges = offsets.back();

@@ -19,15 +19,19 @@ namespace tda {
  * come after it, so every pair of points of neighbouring cells is visited exactly
  * once, from the cell that comes first. The 13 cells form four runs of consecutive
  * cells (z - 1 .. z + 1 for four (x, y) columns) plus the cell after it in z, found
- * once at construction. Cells can be processed in parallel, one per task; the
- * Vietoris-Rips builder, the spanning forest of clustering and region growing, and
- * the gpu/ mirror all read pairs this way. */
+ * once at construction. Cells can be processed in parallel, one per task. The
+ * Vietoris-Rips builder and the spanning forest of clustering read pairs this way;
+ * it is the one grid the coming modules (region growing, the gpu/ mirror) build on.
+ */
 class UniformGrid {
 public:
-  /** \brief Sorts the points into cells of size \a cell_size.
+  /** \brief Sorts the points into cells of size \a cell_size, with \a threads
+   * OpenMP threads (0: OpenMP's default).
    * \throws pcl::BadArgumentException when \a cell_size is not positive and finite,
    * or so small against the extent of the points that cells cannot be indexed */
-  UniformGrid (const std::vector<Point3d>& points, double cell_size);
+  UniformGrid (const std::vector<Point3d>& points,
+               double cell_size,
+               unsigned int threads = 0);
 
   std::size_t
   numCells () const

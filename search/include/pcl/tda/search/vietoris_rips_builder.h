@@ -102,7 +102,8 @@ public:
   }
 
   /** \brief Sets the memory the complex may take, in bytes; a larger complex is
-   * refused before allocation. Default: half of the physical memory. */
+   * refused before allocation. Default: half of the physical memory (no limit where
+   * it cannot be read). */
   void
   setMemoryLimit (std::size_t bytes)
   {

@@ -19,7 +19,8 @@ namespace tda {
 
 template <typename PointT>
 VietorisRipsBuilder<PointT>::VietorisRipsBuilder()
-: memory_limit_ (physicalMemoryBytes() / 2)
+: memory_limit_ (physicalMemoryBytes() > 0 ? physicalMemoryBytes() / 2
+                                           : std::numeric_limits<std::size_t>::max())
 {}
 
 template <typename PointT>
@@ -130,7 +131,7 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
   else {
     std::unique_ptr<UniformGrid> grid;
     try {
-      grid = std::make_unique<UniformGrid> (points, radius_);
+      grid = std::make_unique<UniformGrid> (points, radius_, threads_);
     }
     catch (const pcl::PCLException& error) {
       PCL_ERROR ("[pcl::tda::%s::compute] %s\n",
