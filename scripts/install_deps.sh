@@ -8,6 +8,7 @@ packages=(
   libpcl-dev libeigen3-dev libboost-dev # libraries
   libgtest-dev libbenchmark-dev ccache  # tests and build speed
   clang-format doxygen                  # format check and API reference
+  clang                                 # libFuzzer targets (test/fuzz)
   ripser libphat-dev libgudhi-dev time # reference tools and timing, for tests and benchmarks
 )
 

@@ -1,13 +1,12 @@
 // pcl_tda_barcode: the H0 and H1 persistence diagrams of a point cloud's
 // Vietoris-Rips filtration up to a radius, as CSV and as barcode pictures.
 
-#include <pcl/console/parse.h>
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
-#include <pcl/tda/apps/cloud_files.h>
-#include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/tool_console.h>
-#include <pcl/tda/common/atomic_file.h>
+#include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/apps/tool_outputs.h>
+#include <pcl/tda/apps/voxel_grid_check.h>
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>
@@ -16,9 +15,11 @@
 #include <pcl/tda/common/phat_io.h>
 #include <pcl/tda/common/progress_bar.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
+#include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
 #include <cstdio>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -32,7 +33,7 @@ struct Options {
   std::string input, output, barcode_svg, diagram_svg, phat_matrix;
   pcl::tda::PersistenceEngine engine = pcl::tda::PersistenceEngine::COHOMOLOGY;
   double radius = 0.0;
-  int dimension = 1;
+  long dimension = 1;
   double leaf = 0.0;
   double memory_mib = 0.0;
   bool json = false;
@@ -46,7 +47,7 @@ struct PhaseSeconds {
 void
 printHelp (const char* program)
 {
-  print_error ("Syntax is: %s input.pcd output.csv -radius R <options>\n", program);
+  print_info ("Syntax is: %s input.pcd output.csv -radius R <options>\n", program);
   print_info ("  Writes the persistence diagram of the Vietoris-Rips filtration of the "
               "input's\n  points up to radius R (CSV: dim,birth,death; inf for "
               "essential classes).\n");
@@ -74,104 +75,134 @@ printHelp (const char* program)
       "                     -diagram F.svg = also draw the persistence diagram\n");
   print_info ("                     -json        = end with one JSON line of sizes and "
               "timings\n");
+  print_info ("  Outputs are written only when the whole run succeeds.\n");
 }
 
-bool
+/** Reads the command line into \a options.
+ * \throws pcl::BadArgumentException naming the option at fault */
+void
 parseOptions (int argc, char** argv, Options& options)
 {
-  const std::vector<int> pcd_files = parse_file_extension_argument (argc, argv, ".pcd");
-  const std::vector<int> csv_files = parse_file_extension_argument (argc, argv, ".csv");
-  if (pcd_files.size() != 1 || csv_files.size() != 1) {
-    print_error ("Need one input PCD file and one output CSV file.\n");
-    return false;
-  }
-  options.input = argv[pcd_files[0]];
-  options.output = argv[csv_files[0]];
-  if (parse_argument (argc, argv, "-radius", options.radius) < 0) {
-    print_error ("The -radius R option is required.\n");
-    return false;
-  }
-  parse_argument (argc, argv, "-dim", options.dimension);
-  parse_argument (argc, argv, "-leaf", options.leaf);
-  parse_argument (argc, argv, "-svg", options.barcode_svg);
-  parse_argument (argc, argv, "-diagram", options.diagram_svg);
-  parse_argument (argc, argv, "-memory", options.memory_mib);
-  parse_argument (argc, argv, "-export-phat", options.phat_matrix);
-  std::string engine_name;
-  if (parse_argument (argc, argv, "-engine", engine_name) >= 0 &&
-      !pcl::tda::parseEngineName (engine_name, options.engine)) {
-    print_error ("Unknown engine %s: use cohomology, fip, incremental or standard.\n",
-                 engine_name.c_str());
-    return false;
-  }
-  options.json = find_switch (argc, argv, "-json");
-  if (!(options.radius > 0.0) || !std::isfinite (options.radius)) {
-    print_error ("The radius must be a positive number, not %g.\n", options.radius);
-    return false;
-  }
-  if (options.dimension != 0 && options.dimension != 1) {
-    print_error ("-dim must be 0 or 1, not %d.\n", options.dimension);
-    return false;
-  }
-  if (!(options.memory_mib >= 0.0)) {
-    print_error ("-memory must be >= 0, not %g.\n", options.memory_mib);
-    return false;
-  }
-  if (!(options.leaf >= 0.0)) {
-    print_error ("-leaf must be >= 0, not %g.\n", options.leaf);
-    return false;
-  }
-  return !pcl::tda::overwritesInput (
-      options.input,
-      {options.output, options.barcode_svg, options.diagram_svg, options.phat_matrix});
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addNumber (
+      "-radius", options.radius, pcl::tda::NumberRange::above (0.0), true);
+  command_line.addInteger ("-dim", options.dimension, 0, 1);
+  // PCL's voxel grid takes a float leaf; the limit in bytes is a std::size_t.
+  command_line.addNumber (
+      "-leaf",
+      options.leaf,
+      pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
+  command_line.addNumber (
+      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+  std::string engine_name = pcl::tda::engineName (options.engine);
+  command_line.addText ("-engine", engine_name);
+  command_line.addText ("-export-phat", options.phat_matrix);
+  command_line.addText ("-svg", options.barcode_svg);
+  command_line.addText ("-diagram", options.diagram_svg);
+  command_line.addSwitch ("-json", options.json);
+  const std::vector<std::string> files = command_line.parse (argc, argv);
+  pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".csv"}});
+  options.input = files[0];
+  options.output = files[1];
+  if (!pcl::tda::parseEngineName (engine_name, options.engine))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Unknown engine " << engine_name
+                                           << ": use cohomology, fip, incremental or "
+                                              "standard.");
+}
+
+/** Writes the diagram and the pictures and matrix asked for, to the temporary files
+ * of \a outputs. */
+void
+writeOutputs (const Options& options,
+              const pcl::tda::ToolOutputs& outputs,
+              const pcl::tda::FilteredComplex& complex,
+              const pcl::tda::PersistenceDiagram& diagram)
+{
+  pcl::tda::saveDiagramCSV (outputs.temporary (options.output), diagram);
+  if (!options.phat_matrix.empty())
+    pcl::tda::savePHATBoundaryMatrix (
+        outputs.temporary (options.phat_matrix),
+        complex,
+        options.phat_matrix.size() > 4 &&
+                options.phat_matrix.compare (
+                    options.phat_matrix.size() - 4, 4, ".bin") == 0
+            ? pcl::tda::PHATFormat::BINARY
+            : pcl::tda::PHATFormat::ASCII);
+  pcl::tda::PlotOptions plot;
+  std::ostringstream title;
+  title << options.input << ", radius " << options.radius;
+  plot.title = title.str();
+  plot.max_value = options.radius;
+  plot.unit = "m";
+  if (!options.barcode_svg.empty())
+    pcl::tda::saveBarcodeSVG (outputs.temporary (options.barcode_svg), diagram, plot);
+  if (!options.diagram_svg.empty())
+    pcl::tda::savePersistenceDiagramSVG (
+        outputs.temporary (options.diagram_svg), diagram, plot);
 }
 
 int
-run (const Options& options)
+run (const Options& options, pcl::tda::ToolConsole& console)
 {
-  TicToc total, timer;
+  pcl::tda::ToolOutputs outputs (options.input,
+                                 {{"output", options.output},
+                                  {"-svg", options.barcode_svg},
+                                  {"-diagram", options.diagram_svg},
+                                  {"-export-phat", options.phat_matrix}});
+  TicToc total;
   PhaseSeconds seconds;
   total.tic();
 
-  timer.tic();
   Cloud::Ptr cloud (new Cloud);
-  if (!pcl::tda::loadToolInput (options.input, *cloud))
+  if (!console.loadInput (options.input, *cloud))
     return 1;
   if (options.leaf > 0.0) {
-    cloud = pcl::tda::voxelGridFilter<pcl::PointXYZ> (cloud, options.leaf);
+    try {
+      cloud = pcl::tda::checkedVoxelGridFilter (cloud, options.leaf);
+    }
+    catch (const pcl::PCLException& error) {
+      console.error (pcl::tda::errorMessage (error));
+      return 1;
+    }
   }
-  seconds.load = timer.toc() / 1000.0;
-  pcl::tda::printDone (timer, std::to_string (cloud->size()) + " points");
+  seconds.load = console.stepMilliseconds() / 1000.0;
+  console.endStep (std::to_string (cloud->size()) + " points");
 
-  timer.tic();
-  print_highlight ("Building the Vietoris-Rips complex of radius ");
-  print_value ("%g ", options.radius);
+  std::ostringstream radius;
+  radius << options.radius;
+  console.beginStep ("Building the Vietoris-Rips complex of radius", radius.str());
   pcl::tda::VietorisRipsBuilder<pcl::PointXYZ> builder;
   builder.setInputCloud (cloud);
   builder.setRadius (options.radius);
-  builder.setMaxDimension (options.dimension + 1);
+  builder.setMaxDimension (static_cast<int> (options.dimension) + 1);
   if (options.memory_mib > 0.0)
     builder.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
   pcl::tda::FilteredComplex complex;
-  if (!builder.compute (complex))
+  pcl::tda::ProgressBar building ("  building");
+  builder.setProgressCallback ([&building] (std::size_t done, std::size_t total) {
+    building.update (done, total);
+  });
+  if (!builder.compute (complex)) {
+    console.endLine(); // the builder said why
+    print_error ("Set a larger limit with -memory M (MiB), or use a smaller -radius or "
+                 "a voxel grid (-leaf).\n");
     return 1;
-  seconds.build = timer.toc() / 1000.0;
-  pcl::tda::printDone (timer,
-                       std::to_string (complex.numVertices()) + " points, " +
-                           std::to_string (complex.numEdges()) + " edges, " +
-                           std::to_string (complex.numTriangles()) + " triangles");
+  }
+  building.finish();
+  seconds.build = console.stepMilliseconds() / 1000.0;
+  console.endStep (std::to_string (complex.numVertices()) + " points, " +
+                   std::to_string (complex.numEdges()) + " edges, " +
+                   std::to_string (complex.numTriangles()) + " triangles");
 
-  timer.tic();
-  print_highlight ("Computing H0 ");
+  console.beginStep ("Computing H0");
   pcl::tda::PersistenceResult result = pcl::tda::computeH0Persistence (complex);
   const std::size_t h0_intervals = result.diagram (complex, 0).size();
-  seconds.h0 = timer.toc() / 1000.0;
-  pcl::tda::printDone (timer, std::to_string (h0_intervals) + " intervals");
+  seconds.h0 = console.stepMilliseconds() / 1000.0;
+  console.endStep (std::to_string (h0_intervals) + " intervals");
 
   if (options.dimension == 1) {
-    timer.tic();
-    print_highlight ("Computing H1 (%s) ",
-                     pcl::tda::engineName (options.engine).c_str());
+    console.beginStep ("Computing H1 (" + pcl::tda::engineName (options.engine) + ")");
     pcl::tda::ProgressBar progress ("  reducing");
     pcl::tda::addH1Persistence (complex,
                                 options.engine,
@@ -180,49 +211,30 @@ run (const Options& options)
                                   progress.update (done, total);
                                 });
     progress.finish();
-    seconds.h1 = timer.toc() / 1000.0;
+    seconds.h1 = console.stepMilliseconds() / 1000.0;
   }
   const pcl::tda::PersistenceDiagram diagram =
-      result.diagram (complex, options.dimension);
+      result.diagram (complex, static_cast<int> (options.dimension));
   const std::size_t h1_intervals = diagram.size() - h0_intervals;
   if (options.dimension == 1)
-    pcl::tda::printDone (timer, std::to_string (h1_intervals) + " intervals");
+    console.endStep (std::to_string (h1_intervals) + " intervals");
 
-  timer.tic();
-  print_highlight ("Saving ");
-  print_value ("%s ", options.output.c_str());
+  console.beginStep ("Saving", options.output);
   try {
-    pcl::tda::saveDiagramCSV (options.output, diagram);
-    if (!options.phat_matrix.empty())
-      pcl::tda::savePHATBoundaryMatrix (
-          options.phat_matrix,
-          complex,
-          options.phat_matrix.size() > 4 &&
-                  options.phat_matrix.compare (
-                      options.phat_matrix.size() - 4, 4, ".bin") == 0
-              ? pcl::tda::PHATFormat::BINARY
-              : pcl::tda::PHATFormat::ASCII);
-    pcl::tda::PlotOptions plot;
-    std::ostringstream title;
-    title << options.input << ", radius " << options.radius;
-    plot.title = title.str();
-    plot.max_value = options.radius;
-    if (!options.barcode_svg.empty())
-      pcl::tda::saveBarcodeSVG (options.barcode_svg, diagram, plot);
-    if (!options.diagram_svg.empty())
-      pcl::tda::savePersistenceDiagramSVG (options.diagram_svg, diagram, plot);
+    writeOutputs (options, outputs, complex, diagram);
+    outputs.commit();
   }
   catch (const std::exception& error) {
-    print_error ("\n%s\n", pcl::tda::errorMessage (error).c_str());
+    console.error (pcl::tda::errorMessage (error));
     return 1;
   }
-  seconds.write = timer.toc() / 1000.0;
-  pcl::tda::printDone (timer, std::to_string (diagram.size()) + " intervals");
-  for (const std::string& picture :
+  seconds.write = console.stepMilliseconds() / 1000.0;
+  console.endStep (std::to_string (diagram.size()) + " intervals");
+  for (const std::string& file :
        {options.barcode_svg, options.diagram_svg, options.phat_matrix})
-    if (!picture.empty()) {
+    if (!file.empty()) {
       print_info ("Written: ");
-      print_value ("%s\n", picture.c_str());
+      print_value ("%s\n", file.c_str());
     }
 
   seconds.total = total.toc() / 1000.0;
@@ -251,16 +263,10 @@ run (const Options& options)
 int
 main (int argc, char** argv)
 {
-  print_info (
-      "Persistence barcodes of a point cloud. For more information, use: %s -h\n",
-      argv[0]);
-  if (argc < 3 || find_switch (argc, argv, "-h") ||
-      find_switch (argc, argv, "--help")) {
-    printHelp (argv[0]);
-    return argc < 3 ? 1 : 0;
-  }
-  Options options;
-  if (!parseOptions (argc, argv, options))
-    return 1;
-  return run (options);
+  return pcl::tda::runTool<Options> (argc,
+                                     argv,
+                                     "Persistence barcodes of a point cloud.",
+                                     printHelp,
+                                     parseOptions,
+                                     run);
 }

@@ -2,37 +2,44 @@
  * circle, torus or sphere with known Betti numbers, or a labelled tabletop scene)
  * to a binary PCD file. */
 
-#include <pcl/console/parse.h>
 #include <pcl/console/print.h>
-#include <pcl/console/time.h>
 #include <pcl/tda/apps/cloud_files.h>
+#include <pcl/tda/apps/tool_console.h>
+#include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/generators/shapes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/exceptions.h>
 
 #include <cmath>
-#include <cstdio>
-#include <cstring>
+#include <limits>
 #include <string>
+#include <vector>
 
 using namespace pcl::console;
 
 namespace {
 
-const char* const OPTIONS[] = {"-n", "-noise", "-seed", "-objects"};
+/** The most points -n asks for: the cloud (32 bytes a point) and its file (16)
+ * then take about 0.5 GB. */
+constexpr long MAX_POINTS = 10000000;
 
 void
-printHelp (int, char** argv)
+printHelp (const char* program)
 {
-  print_error ("Syntax is: %s <circle|torus|sphere|tabletop> output.pcd <options>\n",
-               argv[0]);
+  print_info ("Syntax is: %s <circle|torus|sphere|tabletop> output.pcd <options>\n",
+              program);
   print_info ("  where options are:\n");
-  print_info ("    -n N       = number of points of a shape (default: circle 1000, "
-              "torus 2500, sphere 1500);\n"
-              "                 for tabletop, about N samples on the table top, which "
-              "sets the sampling density\n"
-              "                 (default: one point per 1 cm x 1 cm; at least 1750)\n");
+  print_info (
+      "    -n N       = number of points of a shape, 1 to %ld (default: circle "
+      "1000,\n"
+      "                 torus 2500, sphere 1500); for tabletop, about N samples "
+      "on the table\n"
+      "                 top, which sets the sampling density (default: one "
+      "point per 1 cm x 1 cm;\n"
+      "                 at least 1750)\n",
+      MAX_POINTS);
   print_info ("    -noise S   = Gaussian noise sigma of a shape (default 0.01), or the "
               "depth noise sigma at 1 m\n"
               "                 of the tabletop camera (default 0.001)\n");
@@ -42,63 +49,120 @@ printHelp (int, char** argv)
               pcl::tda::MAX_TABLETOP_OBJECTS);
 }
 
-/** Checks that every argument after the kind and the output file is a known option
- * followed by a value. */
-bool
-checkOptions (int argc, char** argv)
+/** The parameters of the command line; n 0, objects and noise < 0 when not
+ * given. */
+struct Options {
+  std::string kind, output;
+  long n = 0, seed = 0, objects = -1;
+  double noise = -1.0;
+};
+
+/** Reads the command line into \a options.
+ * \throws pcl::BadArgumentException naming the option at fault */
+void
+parseOptions (int argc, char** argv, Options& options)
 {
-  for (int i = 3; i < argc; i += 2) {
-    bool known = false;
-    for (const char* option : OPTIONS)
-      known = known || std::strcmp (argv[i], option) == 0;
-    if (!known) {
-      print_error ("Unknown argument %s.\n", argv[i]);
-      return false;
-    }
-    if (i + 1 >= argc) {
-      print_error ("Option %s needs a value.\n", argv[i]);
-      return false;
-    }
-  }
-  return true;
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addInteger ("-n", options.n, 1, MAX_POINTS);
+  command_line.addNumber (
+      "-noise",
+      options.noise,
+      pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
+  command_line.addInteger ("-seed", options.seed, 0, std::numeric_limits<long>::max());
+  command_line.addInteger ("-objects",
+                           options.objects,
+                           0,
+                           static_cast<long> (pcl::tda::MAX_TABLETOP_OBJECTS));
+  const std::vector<std::string> arguments = command_line.parse (argc, argv);
+  pcl::tda::checkArguments (arguments, {{"kind", ""}, {"output", ".pcd"}});
+  options.kind = arguments[0];
+  options.output = arguments[1];
+  if (options.kind != "circle" && options.kind != "torus" && options.kind != "sphere" &&
+      options.kind != "tabletop")
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Unknown kind '" << options.kind
+                                          << "': use circle, torus, sphere or "
+                                             "tabletop.");
+  if (options.objects >= 0 && options.kind != "tabletop")
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Option -objects applies to tabletop only.");
 }
 
-/** Parses an integer option; false with a message when it is present but invalid
- * or below minimum. */
+/** Writes the cloud as binary PCD to the temporary file of \a outputs and commits
+ * it, as a console step. */
 bool
-parseInteger (int argc, char** argv, const char* option, long minimum, long& value)
+saveCloud (const std::string& path,
+           const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
+           pcl::tda::ToolOutputs& outputs,
+           pcl::tda::ToolConsole& console)
 {
-  if (find_argument (argc, argv, option) < 0)
-    return true;
-  if (parse_argument (argc, argv, option, value) < 0 || value < minimum) {
-    print_error ("Option %s needs an integer >= %ld.\n", option, minimum);
-    return false;
-  }
-  return true;
-}
-
-/** Writes the cloud as binary PCD, atomically, with the tool's progress lines. */
-bool
-saveCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZRGBL>& cloud)
-{
-  TicToc tt;
-  tt.tic();
-  print_highlight ("Saving ");
-  print_value ("%s ", path.c_str());
+  console.beginStep ("Saving", path);
   try {
-    pcl::tda::savePointCloudFile (path, cloud);
+    pcl::tda::savePointCloudFile (outputs.temporary (path), cloud);
+    outputs.commit();
   }
   catch (const pcl::PCLException& e) {
-    print_error (
-        "\nCannot write %s: %s\n", path.c_str(), pcl::tda::errorMessage (e).c_str());
+    console.error ("Cannot write " + path + ": " + pcl::tda::errorMessage (e));
     return false;
   }
-  print_info ("[done, ");
-  print_value ("%g", tt.toc());
-  print_info (" ms : ");
-  print_value ("%zu", cloud.size());
-  print_info (" points]\n");
+  console.endStep (std::to_string (cloud.size()) + " points");
   return true;
+}
+
+/** Generates the cloud of \a options and saves it. */
+int
+run (const Options& options, pcl::tda::ToolConsole& console)
+{
+  pcl::tda::ToolOutputs outputs ("", {{"output", options.output}});
+  const std::string& kind = options.kind;
+  const long n = options.n, seed = options.seed, objects = options.objects;
+  const double noise = options.noise;
+  console.beginStep ("Generating", kind);
+  if (kind == "tabletop") {
+    pcl::tda::TabletopParameters parameters;
+    if (n > 0)
+      parameters.point_spacing = static_cast<float> (std::sqrt (
+          static_cast<double> (parameters.table_width) * parameters.table_depth / n));
+    if (noise >= 0.0)
+      parameters.noise_sigma = static_cast<float> (noise);
+    if (objects >= 0)
+      parameters.num_objects = static_cast<std::size_t> (objects);
+    parameters.seed = static_cast<std::uint64_t> (seed);
+    const pcl::tda::TabletopScene scene = pcl::tda::generateTabletopScene (parameters);
+    console.endStep (std::to_string (scene.cloud->size()) + " points, " +
+                     std::to_string (scene.objects.size()) + " objects");
+    print_info ("Labels: table ");
+    print_value ("%u", pcl::tda::TABLE_LABEL);
+    print_info (", objects ");
+    print_value ("%u", pcl::tda::FIRST_OBJECT_LABEL);
+    print_info (" to ");
+    print_value ("%zu\n", pcl::tda::FIRST_OBJECT_LABEL + scene.objects.size() - 1);
+    return saveCloud (options.output, *scene.cloud, outputs, console) ? 0 : 1;
+  }
+
+  // The parameters every shape has, from the options given.
+  const auto with_options = [&] (auto parameters) {
+    if (n > 0)
+      parameters.num_points = static_cast<std::size_t> (n);
+    if (noise >= 0.0)
+      parameters.noise_sigma = static_cast<float> (noise);
+    parameters.seed = static_cast<std::uint64_t> (seed);
+    return parameters;
+  };
+  const pcl::tda::SyntheticShape shape =
+      kind == "circle"
+          ? pcl::tda::generateCircle (with_options (pcl::tda::CircleParameters{}))
+      : kind == "torus"
+          ? pcl::tda::generateTorus (with_options (pcl::tda::TorusParameters{}))
+          : pcl::tda::generateSphere (with_options (pcl::tda::SphereParameters{}));
+  console.endStep (std::to_string (shape.cloud->size()) + " points");
+  print_info ("Expected Betti numbers: beta0 = ");
+  print_value ("%d", shape.beta0);
+  print_info (", beta1 = ");
+  print_value ("%d", shape.beta1);
+  print_info ("; suggested Vietoris-Rips radius: ");
+  print_value ("%g\n", shape.suggested_radius);
+  return saveCloud (options.output, *shape.cloud, outputs, console) ? 0 : 1;
 }
 
 } // namespace
@@ -106,120 +170,11 @@ saveCloud (const std::string& path, const pcl::PointCloud<pcl::PointXYZRGBL>& cl
 int
 main (int argc, char** argv)
 {
-  print_info ("Generate a synthetic point cloud with exact ground truth. For more "
-              "information, use: %s -h\n",
-              argv[0]);
-  if (find_switch (argc, argv, "-h") || find_switch (argc, argv, "--help")) {
-    printHelp (argc, argv);
-    return 0;
-  }
-  if (argc < 3) {
-    printHelp (argc, argv);
-    return 1;
-  }
-  const std::string kind = argv[1];
-  const std::string output = argv[2];
-  if (kind != "circle" && kind != "torus" && kind != "sphere" && kind != "tabletop") {
-    print_error ("Unknown kind '%s': use circle, torus, sphere or tabletop.\n",
-                 kind.c_str());
-    return 1;
-  }
-  if (!checkOptions (argc, argv))
-    return 1;
-
-  long n = 0, seed = 0, objects = -1;
-  double noise = -1.0;
-  if (!parseInteger (argc, argv, "-n", 1, n) ||
-      !parseInteger (argc, argv, "-seed", 0, seed) ||
-      !parseInteger (argc, argv, "-objects", 0, objects))
-    return 1;
-  if (find_argument (argc, argv, "-noise") >= 0 &&
-      (parse_argument (argc, argv, "-noise", noise) < 0 || !std::isfinite (noise) ||
-       noise < 0.0)) {
-    print_error ("Option -noise needs a finite number >= 0.\n");
-    return 1;
-  }
-  if (objects >= 0 && kind != "tabletop") {
-    print_error ("Option -objects applies to tabletop only.\n");
-    return 1;
-  }
-
-  TicToc tt;
-  tt.tic();
-  print_highlight ("Generating ");
-  print_value ("%s ", kind.c_str());
-  try {
-    if (kind == "tabletop") {
-      pcl::tda::TabletopParameters parameters;
-      if (n > 0)
-        parameters.point_spacing = static_cast<float> (std::sqrt (
-            static_cast<double> (parameters.table_width) * parameters.table_depth / n));
-      if (noise >= 0.0)
-        parameters.noise_sigma = static_cast<float> (noise);
-      if (objects >= 0)
-        parameters.num_objects = static_cast<std::size_t> (objects);
-      parameters.seed = static_cast<std::uint64_t> (seed);
-      const pcl::tda::TabletopScene scene =
-          pcl::tda::generateTabletopScene (parameters);
-      print_info ("[done, ");
-      print_value ("%g", tt.toc());
-      print_info (" ms : ");
-      print_value ("%zu", scene.cloud->size());
-      print_info (" points, ");
-      print_value ("%zu", scene.objects.size());
-      print_info (" objects]\n");
-      print_info ("Labels: table ");
-      print_value ("%u", pcl::tda::TABLE_LABEL);
-      print_info (", objects ");
-      print_value ("%u", pcl::tda::FIRST_OBJECT_LABEL);
-      print_info (" to ");
-      print_value ("%zu\n", pcl::tda::FIRST_OBJECT_LABEL + scene.objects.size() - 1);
-      return saveCloud (output, *scene.cloud) ? 0 : 1;
-    }
-
-    pcl::tda::SyntheticShape shape;
-    if (kind == "circle") {
-      pcl::tda::CircleParameters parameters;
-      if (n > 0)
-        parameters.num_points = static_cast<std::size_t> (n);
-      if (noise >= 0.0)
-        parameters.noise_sigma = static_cast<float> (noise);
-      parameters.seed = static_cast<std::uint64_t> (seed);
-      shape = pcl::tda::generateCircle (parameters);
-    }
-    else if (kind == "torus") {
-      pcl::tda::TorusParameters parameters;
-      if (n > 0)
-        parameters.num_points = static_cast<std::size_t> (n);
-      if (noise >= 0.0)
-        parameters.noise_sigma = static_cast<float> (noise);
-      parameters.seed = static_cast<std::uint64_t> (seed);
-      shape = pcl::tda::generateTorus (parameters);
-    }
-    else {
-      pcl::tda::SphereParameters parameters;
-      if (n > 0)
-        parameters.num_points = static_cast<std::size_t> (n);
-      if (noise >= 0.0)
-        parameters.noise_sigma = static_cast<float> (noise);
-      parameters.seed = static_cast<std::uint64_t> (seed);
-      shape = pcl::tda::generateSphere (parameters);
-    }
-    print_info ("[done, ");
-    print_value ("%g", tt.toc());
-    print_info (" ms : ");
-    print_value ("%zu", shape.cloud->size());
-    print_info (" points]\n");
-    print_info ("Expected Betti numbers: beta0 = ");
-    print_value ("%d", shape.beta0);
-    print_info (", beta1 = ");
-    print_value ("%d", shape.beta1);
-    print_info ("; suggested Vietoris-Rips radius: ");
-    print_value ("%g\n", shape.suggested_radius);
-    return saveCloud (output, *shape.cloud) ? 0 : 1;
-  }
-  catch (const pcl::BadArgumentException& e) {
-    print_error ("\n%s\n", pcl::tda::errorMessage (e).c_str());
-    return 1;
-  }
+  return pcl::tda::runTool<Options> (
+      argc,
+      argv,
+      "Generate a synthetic point cloud with exact ground truth.",
+      printHelp,
+      parseOptions,
+      run);
 }

@@ -3,16 +3,16 @@
 // voxel grid, persistent Euclidean clustering; writes the labelled points and the
 // H0 barcode.
 
-#include <pcl/console/parse.h>
 #include <pcl/console/print.h>
-#include <pcl/console/time.h>
-#include <pcl/tda/apps/cloud_files.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/tool_console.h>
-#include <pcl/tda/common/atomic_file.h>
+#include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/apps/tool_outputs.h>
+#include <pcl/tda/apps/voxel_grid_check.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/persistence_plots.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
+#include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
 #include <array>
@@ -31,15 +31,16 @@ struct Options {
   std::string input, output, barcode_svg;
   pcl::tda::ScenePreprocessing preprocessing;
   double radius = 0.0;
-  int min_size = 1;
-  int max_size = std::numeric_limits<int>::max();
+  long min_size = 1;
+  long max_size = std::numeric_limits<int>::max();
   bool automatic = false;
+  double memory_mib = 0.0;
 };
 
 void
 printHelp (const char* program)
 {
-  print_error ("Syntax is: %s input.pcd output.pcd -radius R <options>\n", program);
+  print_info ("Syntax is: %s input.pcd output.pcd -radius R <options>\n", program);
   print_info ("  Segments the objects of a tabletop frame: the preprocessed points, "
               "labelled by\n  cluster (label 0: in no cluster; 1, 2, ... by "
               "decreasing size, one colour each).\n");
@@ -55,54 +56,47 @@ printHelp (const char* program)
   print_info ("    -plane_dist D = distance to the plane of removed points (default "
               "0.01)\n");
   print_info ("    -leaf L     = voxel grid leaf applied last (default 0 = off)\n");
-  print_info ("    -svg F.svg  = also draw the H0 barcode\n");
+  print_info ("    -memory M   = refuse radius graphs over M MiB (default: half of "
+              "the memory)\n");
+  print_info ("    -svg F.svg  = also draw the H0 barcode (with the chosen cut)\n");
+  print_info ("  Outputs are written only when the whole run succeeds.\n");
 }
 
-bool
+/** Reads the command line into \a options.
+ * \throws pcl::BadArgumentException naming the option at fault */
+void
 parseOptions (int argc, char** argv, Options& options)
 {
-  const std::vector<int> pcd_files = parse_file_extension_argument (argc, argv, ".pcd");
-  if (pcd_files.size() != 2) {
-    print_error ("Need one input and one output PCD file.\n");
-    return false;
-  }
-  options.input = argv[pcd_files[0]];
-  options.output = argv[pcd_files[1]];
-  if (parse_argument (argc, argv, "-radius", options.radius) < 0) {
-    print_error ("The -radius R option is required.\n");
-    return false;
-  }
-  int plane = 1;
-  parse_argument (argc, argv, "-plane", plane);
-  parse_argument (argc, argv, "-plane_dist", options.preprocessing.plane_distance);
-  parse_argument (argc, argv, "-range", options.preprocessing.max_depth);
-  parse_argument (argc, argv, "-leaf", options.preprocessing.leaf);
-  parse_argument (argc, argv, "-min", options.min_size);
-  parse_argument (argc, argv, "-max", options.max_size);
-  parse_argument (argc, argv, "-svg", options.barcode_svg);
-  options.automatic = find_switch (argc, argv, "-auto");
+  const long max_int = std::numeric_limits<int>::max();
+  long plane = 1;
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addNumber (
+      "-radius", options.radius, pcl::tda::NumberRange::above (0.0), true);
+  command_line.addSwitch ("-auto", options.automatic);
+  command_line.addInteger ("-min", options.min_size, 1, max_int);
+  command_line.addInteger ("-max", options.max_size, 1, max_int);
+  command_line.addNumber (
+      "-range", options.preprocessing.max_depth, pcl::tda::NumberRange::atLeast (0.0));
+  command_line.addInteger ("-plane", plane, 0, 1);
+  command_line.addNumber ("-plane_dist",
+                          options.preprocessing.plane_distance,
+                          pcl::tda::NumberRange::above (0.0));
+  command_line.addNumber (
+      "-leaf",
+      options.preprocessing.leaf,
+      pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
+  command_line.addNumber (
+      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+  command_line.addText ("-svg", options.barcode_svg);
+  const std::vector<std::string> files = command_line.parse (argc, argv);
+  pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".pcd"}});
+  options.input = files[0];
+  options.output = files[1];
   options.preprocessing.remove_plane = plane != 0;
-  if (!(options.radius > 0.0) || !std::isfinite (options.radius)) {
-    print_error ("The radius must be a positive number, not %g.\n", options.radius);
-    return false;
-  }
-  if (plane != 0 && plane != 1) {
-    print_error ("-plane must be 0 or 1, not %d.\n", plane);
-    return false;
-  }
-  if (!(options.preprocessing.max_depth >= 0.0) ||
-      !(options.preprocessing.leaf >= 0.0) ||
-      !(options.preprocessing.plane_distance > 0.0)) {
-    print_error ("-range and -leaf must be >= 0 and -plane_dist > 0.\n");
-    return false;
-  }
-  if (options.min_size < 1 || options.max_size < options.min_size) {
-    print_error (
-        "Need 1 <= -min <= -max, not %d and %d.\n", options.min_size, options.max_size);
-    return false;
-  }
-  return !pcl::tda::overwritesInput (options.input,
-                                     {options.output, options.barcode_svg});
+  if (options.max_size < options.min_size)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Need 1 <= -min <= -max, not " << options.min_size << " and "
+                                                        << options.max_size << ".");
 }
 
 /** A colour per label: grey for 0, then well-separated hues. */
@@ -127,55 +121,64 @@ labelColour (std::size_t label)
 }
 
 int
-run (const Options& options)
+run (const Options& options, pcl::tda::ToolConsole& console)
 {
-  TicToc timer;
-  timer.tic();
+  pcl::tda::ToolOutputs outputs (
+      options.input, {{"output", options.output}, {"-svg", options.barcode_svg}});
   Cloud::Ptr cloud (new Cloud);
-  if (!pcl::tda::loadToolInput (options.input, *cloud))
+  if (!console.loadInput (options.input, *cloud))
     return 1;
-  pcl::tda::printDone (timer,
-                       std::to_string (cloud->size()) + " points" +
-                           (cloud->isOrganized() ? " (organized)" : ""));
+  console.endStep (std::to_string (cloud->size()) + " points" +
+                   (cloud->isOrganized() ? " (organized)" : ""));
 
-  timer.tic();
-  print_highlight ("Preprocessing ");
+  console.beginStep ("Preprocessing");
   pcl::tda::PreprocessingCounts counts;
   Cloud::Ptr points;
   try {
-    points = pcl::tda::preprocessScene (*cloud, options.preprocessing, &counts);
+    // The voxel grid comes last: apply it here, once its leaf is checked against
+    // the points it grids (PCL's grid ignores a leaf that is too small).
+    pcl::tda::ScenePreprocessing before_grid = options.preprocessing;
+    before_grid.leaf = 0.0;
+    points = pcl::tda::preprocessScene (*cloud, before_grid, &counts);
+    if (options.preprocessing.leaf > 0.0)
+      points = pcl::tda::checkedVoxelGridFilter (points, options.preprocessing.leaf);
   }
   catch (const pcl::PCLException& error) {
-    print_error ("\nCannot preprocess %s: %s\n",
-                 options.input.c_str(),
-                 pcl::tda::errorMessage (error).c_str());
+    console.error ("Cannot preprocess " + options.input + ": " +
+                   pcl::tda::errorMessage (error));
     return 1;
   }
   std::ostringstream preprocessed;
   preprocessed << points->size() << " points; removed " << counts.non_finite
                << " non-finite, " << counts.beyond_depth << " beyond range, "
                << counts.plane << " on the plane";
-  pcl::tda::printDone (timer, preprocessed.str());
+  console.endStep (preprocessed.str());
 
-  timer.tic();
-  print_highlight ("Clustering ");
+  console.beginStep ("Clustering");
   pcl::tda::PersistentEuclideanClusterExtraction<pcl::PointXYZ> extraction;
   extraction.setInputCloud (points);
   extraction.setMaxDistance (options.radius);
   extraction.setMinClusterSize (options.min_size);
   extraction.setMaxClusterSize (options.max_size);
   extraction.setAutoMaxDistance (options.automatic);
+  // The automatic distance never goes below the voxel grid's spacing.
+  extraction.setAutoMinDistance (options.preprocessing.leaf);
+  if (options.memory_mib > 0.0)
+    extraction.setMemoryLimit (
+        static_cast<std::size_t> (options.memory_mib * 1048576.0));
   std::vector<pcl::PointIndices> clusters;
   extraction.extract (clusters);
   if (extraction.getPersistenceDiagram().empty()) {
-    print_error ("Clustering failed (see above).\n");
+    console.error ("Clustering failed (see above). For a radius graph over the memory "
+                   "limit: set a larger one with -memory M (MiB), or use a smaller "
+                   "-radius or a voxel grid (-leaf).");
     return 1;
   }
   std::ostringstream clustered;
   clustered << clusters.size() << " clusters at distance "
             << extraction.getChosenDistance() << (options.automatic ? " (chosen)" : "")
             << ", " << extraction.getNumEdges() << " edges";
-  pcl::tda::printDone (timer, clustered.str());
+  console.endStep (clustered.str());
 
   pcl::PointCloud<pcl::PointXYZRGBL> labelled;
   pcl::copyPointCloud (*points, labelled);
@@ -203,11 +206,9 @@ run (const Options& options)
                 centroid[2]);
   }
 
-  timer.tic();
-  print_highlight ("Saving ");
-  print_value ("%s ", options.output.c_str());
+  console.beginStep ("Saving", options.output);
   try {
-    pcl::tda::savePointCloudFile (options.output, labelled);
+    pcl::tda::savePointCloudFile (outputs.temporary (options.output), labelled);
     if (!options.barcode_svg.empty()) {
       pcl::tda::PlotOptions plot;
       std::ostringstream title;
@@ -215,15 +216,19 @@ run (const Options& options)
             << clusters.size() << " clusters";
       plot.title = title.str();
       plot.max_value = options.radius;
-      pcl::tda::saveBarcodeSVG (
-          options.barcode_svg, extraction.getPersistenceDiagram(), plot);
+      plot.unit = "m";
+      plot.cut = extraction.getChosenDistance();
+      pcl::tda::saveBarcodeSVG (outputs.temporary (options.barcode_svg),
+                                extraction.getPersistenceDiagram(),
+                                plot);
     }
+    outputs.commit();
   }
   catch (const std::exception& error) {
-    print_error ("\n%s\n", pcl::tda::errorMessage (error).c_str());
+    console.error (pcl::tda::errorMessage (error));
     return 1;
   }
-  pcl::tda::printDone (timer, std::to_string (labelled.size()) + " labelled points");
+  console.endStep (std::to_string (labelled.size()) + " labelled points");
   return 0;
 }
 
@@ -232,16 +237,10 @@ run (const Options& options)
 int
 main (int argc, char** argv)
 {
-  print_info ("Object segmentation by topological persistence. For more information, "
-              "use: %s -h\n",
-              argv[0]);
-  if (argc < 3 || find_switch (argc, argv, "-h") ||
-      find_switch (argc, argv, "--help")) {
-    printHelp (argv[0]);
-    return argc < 3 ? 1 : 0;
-  }
-  Options options;
-  if (!parseOptions (argc, argv, options))
-    return 1;
-  return run (options);
+  return pcl::tda::runTool<Options> (argc,
+                                     argv,
+                                     "Object segmentation by topological persistence.",
+                                     printHelp,
+                                     parseOptions,
+                                     run);
 }

@@ -3,9 +3,11 @@
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/segmentation/sac_segmentation.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/search/canonical_order.h>
 #include <pcl/exceptions.h>
 
 #include <cmath>
+#include <numeric>
 
 namespace pcl {
 namespace tda {
@@ -39,10 +41,15 @@ preprocessScene (const pcl::PointCloud<PointT>& cloud,
   result->header = cloud.header;
   result->sensor_origin_ = cloud.sensor_origin_;
   result->sensor_orientation_ = cloud.sensor_orientation_;
-  for (const auto& point : cloud) {
-    if (!pcl::isXYZFinite (point))
-      ++removed.non_finite;
-    else if (options.max_depth > 0.0 && point.z > options.max_depth)
+  // In canonical order (sorted by x, y, z), so that RANSAC (PCL seeds it with a
+  // fixed seed) samples the
+  // same points, and the whole preprocessing gives the same points, for any order of
+  // the input.
+  pcl::Indices all (cloud.size());
+  std::iota (all.begin(), all.end(), 0);
+  for (const auto index : canonicalOrder (cloud, all, removed.non_finite)) {
+    const PointT& point = cloud[index];
+    if (options.max_depth > 0.0 && point.z > options.max_depth)
       ++removed.beyond_depth;
     else
       result->push_back (point);

@@ -7,37 +7,62 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 
 namespace pcl {
 namespace tda {
+
+std::string
+linkTarget (const std::string& path)
+{
+  namespace fs = std::filesystem;
+  constexpr int MAX_LINKS = 40; // as Linux, which then fails with ELOOP
+  fs::path target = path;
+  std::error_code error;
+  for (int links = 0; links < MAX_LINKS && fs::is_symlink (target, error); ++links) {
+    const fs::path next = fs::read_symlink (target, error);
+    if (error)
+      break;
+    target = next.is_absolute() ? next : target.parent_path() / next;
+  }
+  return target.string();
+}
+
+FileReplacement::FileReplacement (const std::string& path)
+: path_ (path)
+, target_ (linkTarget (path))
+, temporary_ (target_ + ".tmp." + std::to_string (::getpid()))
+{}
+
+FileReplacement::~FileReplacement()
+{
+  if (!committed_)
+    std::remove (temporary_.c_str());
+}
+
+void
+FileReplacement::commit()
+{
+  struct stat replaced;
+  if (::stat (target_.c_str(), &replaced) == 0)
+    ::chmod (temporary_.c_str(), replaced.st_mode & 07777);
+  if (std::rename (temporary_.c_str(), target_.c_str()) != 0)
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         "cannot replace " << path_ << ": " << std::strerror (errno));
+  committed_ = true;
+}
 
 void
 replaceFileAtomically (
     const std::string& path,
     const std::function<bool (const std::string& temporary)>& write_file)
 {
-  const std::string temporary = path + ".tmp." + std::to_string (::getpid());
-  bool written = false;
-  try {
-    written = write_file (temporary);
-  }
-  catch (...) {
-    std::remove (temporary.c_str());
-    throw;
-  }
-  if (!written) {
-    const int error = errno;
-    std::remove (temporary.c_str());
+  FileReplacement file (path);
+  if (!write_file (file.temporary()))
     PCL_THROW_EXCEPTION (pcl::IOException,
-                         "cannot write " << path << ": " << std::strerror (error));
-  }
-  if (std::rename (temporary.c_str(), path.c_str()) != 0) {
-    const int error = errno;
-    std::remove (temporary.c_str());
-    PCL_THROW_EXCEPTION (pcl::IOException,
-                         "cannot replace " << path << ": " << std::strerror (error));
-  }
+                         "cannot write " << path << ": " << std::strerror (errno));
+  file.commit();
 }
 
 void

@@ -44,7 +44,10 @@ constexpr const char* STYLE = ".title{font-size:16px;font-weight:bold}"
                               ".diagonal{stroke:#888}"
                               ".infinity{stroke:#666;stroke-dasharray:6 4}"
                               ".infinity-label{font-size:16px;fill:#333}"
-                              ".legend{fill:white;stroke:#ccc}";
+                              ".legend{fill:white;stroke:#ccc}"
+                              ".cut{stroke:#d62728;stroke-width:1.5;"
+                              "stroke-dasharray:5 3}"
+                              ".cut-label{font-size:11px;fill:#d62728}";
 
 // Text ------------------------------------------------------------------------
 
@@ -159,6 +162,10 @@ checkAndGroup (const PersistenceDiagram& diagram, const PlotOptions& options)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "max_value must be finite and not negative, got "
                              << options.max_value);
+  if (!std::isnan (options.cut) && !(options.cut >= 0 && std::isfinite (options.cut)))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "cut must be finite and not negative (or NaN for none), got "
+                             << options.cut);
   if (!(options.width >= MIN_WIDTH && options.width <= MAX_WIDTH))
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "width must be from " << MIN_WIDTH << " to " << MAX_WIDTH
@@ -194,6 +201,8 @@ filtrationRange (const IntervalsByDimension& intervals, const PlotOptions& optio
     }
   if (options.max_value > 0)
     hi = options.max_value;
+  else if (!std::isnan (options.cut))
+    hi = std::max (hi, options.cut);
   if (hi <= lo)
     hi = lo + 1;
   return {lo, hi};
@@ -350,6 +359,13 @@ writeAxis (std::ostream& out,
         << escapeXml (title) << "</text>\n";
 }
 
+/** \a title, followed by " (unit)" when \a unit is not empty. */
+std::string
+withUnit (const std::string& title, const std::string& unit)
+{
+  return unit.empty() ? title : title + " (" + unit + ")";
+}
+
 /** A red triangle pointing right from (\a x, \a y), the mark of an essential class. */
 void
 writeEssentialMarker (std::ostream& out, double x, double y, double half_height)
@@ -441,6 +457,36 @@ hiddenBarsNote (const BarcodePanel& panel)
          formatSignificant (bound, 2) + ") not drawn";
 }
 
+/** The height of the row of \a bar in a panel of pitch \a pitch. */
+double
+rowPitch (const PersistenceInterval& bar, double pitch)
+{
+  return bar.isEssential() ? std::max (pitch, MIN_ESSENTIAL_PITCH) : pitch;
+}
+
+/** The dashed vertical line at options.cut from pixel row \a top to \a bottom,
+ * labelled "cut" with the value and the unit above it. */
+void
+writeCut (std::ostream& out,
+          const Axis& axis,
+          const PlotOptions& options,
+          double top,
+          double bottom)
+{
+  const double x = axis.toPixel (options.cut);
+  writeLine (out, x, top, x, bottom, "cut");
+  const bool right_half = x > (axis.px_lo + axis.px_hi) / 2;
+  std::string label = "cut " + formatSignificant (options.cut, 3);
+  if (!options.unit.empty())
+    label += " " + options.unit;
+  writeText (out,
+             right_half ? x - 4 : x + 4,
+             top - 7,
+             label,
+             "cut-label",
+             right_half ? "end" : nullptr);
+}
+
 void
 writeBarcodePanel (std::ostream& out,
                    const BarcodePanel& panel,
@@ -466,28 +512,30 @@ writeBarcodePanel (std::ostream& out,
     return;
   }
 
-  const double bar_height = 0.75 * panel.pitch;
-  const auto barTop = [&] (std::size_t row) {
-    return panel.top + PANEL_PADDING + row * panel.pitch +
-           (panel.pitch - bar_height) / 2;
-  };
   out << "<g id=\"barcode-H" << dimension << "\" fill=\""
       << DIMENSION_COLOURS[dimension % DIMENSION_COLOURS.size()] << "\">\n";
-  for (std::size_t row = 0; row < panel.bars.size(); ++row) {
-    const PersistenceInterval& bar = panel.bars[row];
+  std::vector<double> centres; // of the essential bars
+  double row_top = panel.top + PANEL_PADDING;
+  for (const PersistenceInterval& bar : panel.bars) {
+    const double pitch = rowPitch (bar, panel.pitch);
+    const double bar_height =
+        bar.isEssential() ? std::min (0.75 * pitch, pitch - 2) : 0.75 * pitch;
     const double start = axis.toPixel (bar.birth);
     const double end = bar.isEssential() ? right : axis.toPixel (bar.death);
     out << "<rect class=\"bar" << (bar.isEssential() ? " essential" : "") << "\" x=\""
-        << px (start) << "\" y=\"" << px (barTop (row)) << "\" width=\""
-        << px (std::max (end - start, MIN_BAR_WIDTH)) << "\" height=\""
+        << px (start) << "\" y=\"" << px (row_top + (pitch - bar_height) / 2)
+        << "\" width=\"" << px (std::max (end - start, MIN_BAR_WIDTH)) << "\" height=\""
         << px (bar_height) << "\"><title>" << formatInterval (bar)
         << "</title></rect>\n";
+    if (bar.isEssential())
+      centres.push_back (row_top + pitch / 2);
+    row_top += pitch;
   }
   out << "</g>\n<g class=\"essential-marker\" fill=\"" << ESSENTIAL_COLOUR << "\">\n";
-  const double half_height = std::min (std::max (0.5 * panel.pitch, 3.5), 5.0);
-  for (std::size_t row = 0; row < panel.bars.size(); ++row)
-    if (panel.bars[row].isEssential())
-      writeEssentialMarker (out, right, barTop (row) + bar_height / 2, half_height);
+  const double half_height =
+      std::min (std::max (0.5 * panel.pitch, 3.5), 0.5 * MIN_ESSENTIAL_PITCH);
+  for (const double centre : centres)
+    writeEssentialMarker (out, right, centre, half_height);
   out << "</g>\n";
   if (panel.total > panel.bars.size())
     writeText (
@@ -615,7 +663,9 @@ writeBarcodeSVG (std::ostream& out,
     else {
       panel.pitch = std::min (std::max (BAR_AREA_HEIGHT / panel.bars.size(), MIN_PITCH),
                               MAX_PITCH);
-      panel.height = panel.bars.size() * panel.pitch + 2 * PANEL_PADDING;
+      panel.height = 2 * PANEL_PADDING;
+      for (const auto& bar : panel.bars)
+        panel.height += rowPitch (bar, panel.pitch);
     }
     y = panel.top + panel.height + (panel.total > panel.bars.size() ? NOTE_HEIGHT : 0) +
         PANEL_GAP;
@@ -633,7 +683,9 @@ writeBarcodeSVG (std::ostream& out,
   }
   for (std::size_t dimension = 0; dimension < panels.size(); ++dimension)
     writeBarcodePanel (out, panels[dimension], dimension, axis);
-  writeAxis (out, axis, true, axis_y, "filtration value");
+  if (!std::isnan (options.cut))
+    writeCut (out, axis, options, panels.front().top, axis_y);
+  writeAxis (out, axis, true, axis_y, withUnit ("filtration value", options.unit));
   out << "</svg>\n";
 }
 
@@ -698,8 +750,8 @@ writePersistenceDiagramSVG (std::ostream& out,
   writeLine (out, left, bottom, right, top, "diagonal");
   writeLine (out, left, infinity_y, right, infinity_y, "infinity");
   writeText (out, left - 8, infinity_y + 5, "\u221e", "infinity-label", "end");
-  writeAxis (out, x_axis, true, bottom, "birth");
-  writeAxis (out, y_axis, false, left, "death");
+  writeAxis (out, x_axis, true, bottom, withUnit ("birth", options.unit));
+  writeAxis (out, y_axis, false, left, withUnit ("death", options.unit));
   if (point_count == 0)
     writeText (out, left + side / 3, top + side / 3, "no intervals", "note", "middle");
 

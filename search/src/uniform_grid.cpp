@@ -29,22 +29,16 @@ UniformGrid::UniformGrid (const std::vector<Point3d>& points,
       low[axis] = std::min (low[axis], point[axis]);
       high[axis] = std::max (high[axis], point[axis]);
     }
-  // Cell coordinates must stay exact integers well inside int64.
-  constexpr double MAX_CELLS = 1e15;
-  for (int axis = 0; axis < 3; ++axis)
-    if (!((high[axis] - low[axis]) / cell_size <= MAX_CELLS))
-      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                           "the radius " << cell_size
-                                         << " is too small for a cloud extent of "
-                                         << high[axis] - low[axis]
-                                         << " (more than 1e15 cells along an axis)");
-
+  // Cell coordinates are clamped to stay exact in int64: clamping is monotone and
+  // moves no two points apart, so points within a cell size of each other stay in the
+  // same or neighbouring cells; far outliers (a point at 1e30) share the last cells.
+  constexpr double LAST_CELL = 4611686018427387904.0; // 2^62
   std::vector<std::pair<CellKey, std::uint32_t>> keyed (points.size());
   for (std::uint32_t i = 0; i < points.size(); ++i) {
     CellKey key;
     for (int axis = 0; axis < 3; ++axis)
       key[axis] = static_cast<std::int64_t> (
-          std::floor ((points[i][axis] - low[axis]) / cell_size));
+          std::floor (std::min ((points[i][axis] - low[axis]) / cell_size, LAST_CELL)));
     keyed[i] = {key, i};
   }
   std::sort (keyed.begin(), keyed.end());

@@ -12,133 +12,122 @@
 
 namespace pcl {
 namespace tda {
+namespace {
 
+/** The \a q quantile (0 < q <= 1, the smallest value with at least a share q of the
+ * values at or below it) of \a values, not empty; reorders them. */
 double
+quantile (std::vector<double>& values, double q)
+{
+  const auto rank = static_cast<std::size_t> (
+      std::max (std::ceil (q * static_cast<double> (values.size())) - 1.0, 0.0));
+  std::nth_element (values.begin(), values.begin() + rank, values.end());
+  return values[rank];
+}
+
+} // namespace
+
+ClusterDistanceChoice
 chooseClusterDistance (const FilteredComplex& complex,
                        const PersistenceResult& h0,
                        double max_distance,
                        std::size_t min_cluster_size,
-                       double gap_ratio)
+                       double gap_ratio,
+                       double min_distance)
 {
-  // Bars of the significant components: a component is born (as a would-be
-  // cluster) when it first has significant_size points, and dies when it merges
-  // with an older one (the elder rule on these births).
-  struct Bar {
-    double birth;
-    double death;
-  };
+  ClusterDistanceChoice choice;
+  choice.distance = max_distance;
+
+  // Replaying the negative edges (the minimum spanning forest) in filtration order
+  // gives the components. A component becomes significant (a would-be cluster, +1 to
+  // the count) when it first has significant_size points, and a merge of two
+  // significant components subtracts 1.
   const std::size_t significant_size = std::max<std::size_t> (min_cluster_size, 2);
   const std::size_t num_vertices = complex.numVertices();
-  constexpr double NOT_SIGNIFICANT = -1.0;
   UnionFind components (num_vertices);
-  std::vector<double> significant_birth (num_vertices, NOT_SIGNIFICANT);
-  std::vector<Bar> bars;
-  std::vector<std::pair<double, int>> events; // (scale, +1 birth or -1 death)
-  double smallest_death = std::numeric_limits<double>::infinity();
-  // The negative edges in filtration order: replaying them gives the components.
+  std::vector<bool> significant (num_vertices, false);
+  std::vector<std::pair<double, int>> events; // (scale, +1 or -1)
+  std::vector<double> nearest (num_vertices, std::numeric_limits<double>::infinity());
   for (const SimplexIndex e : h0.negativeEdges()) {
     const FilteredEdge& edge = complex.edges()[e];
     const SimplexIndex a = components.find (edge.source);
     const SimplexIndex b = components.find (edge.target);
-    const double birth_a = significant_birth[a], birth_b = significant_birth[b];
+    const bool both = significant[a] && significant[b];
+    const bool either = significant[a] || significant[b];
     const SimplexIndex root = components.linkRoots (a, b);
-    if (edge.value > 0.0)
-      smallest_death = std::min (smallest_death, edge.value);
-    if (birth_a >= 0.0 && birth_b >= 0.0) {
-      bars.push_back ({std::max (birth_a, birth_b), edge.value});
+    significant[root] = either || components.setSize (root) >= significant_size;
+    if (both)
       events.emplace_back (edge.value, -1);
-      significant_birth[root] = std::min (birth_a, birth_b);
-    }
-    else if (birth_a >= 0.0 || birth_b >= 0.0)
-      significant_birth[root] = std::max (birth_a, birth_b);
-    else if (components.setSize (root) >= significant_size) {
-      significant_birth[root] = edge.value;
+    else if (!either && significant[root])
       events.emplace_back (edge.value, +1);
+    if (edge.value > 0.0) {
+      nearest[edge.source] = std::min (nearest[edge.source], edge.value);
+      nearest[edge.target] = std::min (nearest[edge.target], edge.value);
     }
   }
-  std::size_t eldest = bars.size();
-  for (SimplexIndex v = 0; v < num_vertices; ++v)
-    if (components.find (v) == v && significant_birth[v] >= 0.0) {
-      if (eldest == bars.size() || significant_birth[v] < bars[eldest].birth)
-        eldest = bars.size();
-      bars.push_back ({significant_birth[v], max_distance});
-    }
-  if (eldest == bars.size() || !std::isfinite (smallest_death))
-    return max_distance; // no component of significant size, or no positive scale
 
-  // Dense bars are born within gap_ratio of the eldest's birth, i.e. at the
-  // sampling scale; sparse ones later (e.g. remnants of a removed plane).
-  const double densest_birth = std::max (bars[eldest].birth, smallest_death);
-  const auto dense = [&] (const Bar& bar) {
-    return bar.birth <= gap_ratio * densest_birth;
+  // The sampling scale: the median nearest-neighbour distance (the shortest
+  // spanning forest edge of each point).
+  std::vector<double> spacings;
+  for (const double spacing : nearest)
+    if (std::isfinite (spacing))
+      spacings.push_back (spacing);
+  if (spacings.empty())
+    return choice; // no positive scale
+
+  // The floor: the sampling scale or the caller's floor, whichever is larger.
+  choice.sampling_scale = quantile (spacings, 0.5);
+  const double floor = std::max (choice.sampling_scale, min_distance);
+  if (!(floor < max_distance))
+    return choice;
+
+  // The count of significant components is a step function of the scale; its steps over
+  // (floor, max_distance] are the candidate intervals, compared by their length on a
+  // logarithmic scale, log(high / low).
+  struct Step {
+    double low;
+    double high;
+    std::ptrdiff_t count;
   };
-  const auto lifetime = [&] (const Bar& bar) {
-    return std::log (bar.death / std::max (bar.birth, smallest_death));
+  std::vector<Step> steps;
+  std::sort (events.begin(), events.end());
+  std::ptrdiff_t count = 0;
+  std::size_t e = 0;
+  for (double low = floor; low < max_distance;) {
+    for (; e < events.size() && events[e].first <= low; ++e)
+      count += events[e].second;
+    const double high =
+        e < events.size() ? std::min (events[e].first, max_distance) : max_distance;
+    if (count > 0)
+      steps.push_back ({low, high, count});
+    low = high;
+  }
+  const auto length = [] (const Step* step) {
+    return step ? std::log (step->high / step->low) : 0.0;
   };
-  // The clusters: the eldest bar, plus the dense bars above the largest gap in the
-  // log-lifetimes of the others (a virtual bar of lifetime 0 below them), among
-  // those that live at least gap_ratio times their birth.
-  std::vector<std::size_t> others;
-  for (std::size_t k = 0; k < bars.size(); ++k)
-    if (k != eldest && dense (bars[k]))
-      others.push_back (k);
-  std::stable_sort (others.begin(), others.end(), [&] (std::size_t a, std::size_t b) {
-    return lifetime (bars[a]) > lifetime (bars[b]);
-  });
-  std::size_t num_longer = 0;
-  double largest_gap = -1.0;
-  for (std::size_t k = 0;
-       k < others.size() && lifetime (bars[others[k]]) >= std::log (gap_ratio);
-       ++k) {
-    const double next = k + 1 < others.size() ? lifetime (bars[others[k + 1]]) : 0.0;
-    if (lifetime (bars[others[k]]) - next > largest_gap) {
-      largest_gap = lifetime (bars[others[k]]) - next;
-      num_longer = k + 1;
-    }
+  // The longest step of a split (two clusters or more) and of one cluster, the
+  // longest of the other splits; the earliest of equally long ones.
+  const Step *split = nullptr, *whole = nullptr;
+  for (const Step& step : steps) {
+    const Step*& best = step.count > 1 ? split : whole;
+    if (length (&step) > length (best))
+      best = &step;
   }
-  const std::size_t num_clusters = num_longer + 1;
-
-  // The window of scales where these clusters all exist and no sparse component
-  // has merged yet.
-  double window_low = densest_birth, window_high = max_distance;
-  for (std::size_t k = 0; k < num_longer; ++k) {
-    window_low = std::max (window_low, bars[others[k]].birth);
-    window_high = std::min (window_high, bars[others[k]].death);
-  }
-  for (const Bar& bar : bars)
-    if (!dense (bar))
-      window_high = std::min (window_high, bar.death);
-  if (!(window_high > window_low)) {
-    window_low = smallest_death;
-    window_high = max_distance;
-  }
-
-  // The distance: the geometric middle of the longest (relative) interval of the
-  // window over which exactly k significant components exist (or, without one, the
-  // count nearest k).
-  std::stable_sort (events.begin(), events.end(), [] (const auto& a, const auto& b) {
-    return a.first < b.first;
-  });
-  std::size_t count = 0;
-  double best_length = -1.0, chosen = max_distance;
-  std::size_t best_miss = std::numeric_limits<std::size_t>::max();
-  for (std::size_t e = 0; e < events.size(); ++e) {
-    count += events[e].second; // -1 wraps to a decrement
-    const double low = std::max (events[e].first, window_low);
-    const double high = std::min (
-        e + 1 < events.size() ? events[e + 1].first : max_distance, window_high);
-    if (!(high > low))
-      continue;
-    const std::size_t miss =
-        count > num_clusters ? count - num_clusters : num_clusters - count;
-    const double length = std::log (high / low);
-    if (miss < best_miss || (miss == best_miss && length > best_length)) {
-      best_miss = miss;
-      best_length = length;
-      chosen = std::sqrt (low * high);
-    }
-  }
-  return std::min (chosen, max_distance);
+  const Step* chosen =
+      split && (length (split) >= std::log (gap_ratio) || !whole) ? split : whole;
+  if (!chosen)
+    return choice; // no significant component above the floor
+  double runner_up = 0.0;
+  for (const Step& step : steps)
+    if (step.count > 1 && &step != chosen)
+      runner_up = std::max (runner_up, length (&step));
+  choice.low = chosen->low;
+  choice.high = chosen->high;
+  choice.num_clusters = static_cast<std::size_t> (chosen->count);
+  choice.distance = std::sqrt (choice.low * choice.high);
+  choice.clear = length (chosen) >= std::log (gap_ratio) &&
+                 length (chosen) >= gap_ratio * runner_up;
+  return choice;
 }
 
 } // namespace tda

@@ -175,15 +175,16 @@ TEST (SegmentTool, RefusesBadInputWithClearErrors)
   const std::vector<std::pair<std::string, std::string>> cases{
       {temporaryPath ("missing.pcd") + " " + output + " -radius 0.02",
        "Cannot read the PCD file"},
-      {line_pcd + " " + output, "-radius R option is required"},
-      {line_pcd + " " + output + " -radius 0", "radius must be a positive number"},
-      {line_pcd + " " + output + " -radius -1", "radius must be a positive number"},
+      {line_pcd + " " + output, "Option -radius is required"},
+      {line_pcd + " " + output + " -radius 0", "Option -radius needs a number > 0"},
+      {line_pcd + " " + output + " -radius -1", "Option -radius needs a number > 0"},
       {line_pcd + " " + output + " -radius 0.02 -min 10 -max 5",
        "Need 1 <= -min <= -max"},
       {line_pcd + " " + output + " -radius 0.02", "no plane found"},
       {nan_pcd + " " + output + " -radius 0.02 -plane 0", "all are NaN"},
-      {line_pcd + " " + line_pcd + " -radius 0.02 -plane 0", "Refusing to overwrite"},
-      {line_pcd + " " + output + " -radius 0.02 -plane 2", "-plane must be 0 or 1"},
+      {line_pcd + " " + line_pcd + " -radius 0.02 -plane 0", "refusing to overwrite"},
+      {line_pcd + " " + output + " -radius 0.02 -plane 2",
+       "Option -plane needs an integer from 0 to 1"},
   };
   for (const auto& [arguments, message] : cases) {
     const RunResult result = runTool (arguments);

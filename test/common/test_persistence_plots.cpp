@@ -555,6 +555,73 @@ TEST (BarcodeSVG, RejectsInvalidInput)
   options = {};
   options.width = 10;
   EXPECT_THROW (persistenceDiagram (smallDiagram(), options), BadArgumentException);
+  for (const double cut : {-0.1, INF}) {
+    options = {};
+    options.cut = cut;
+    EXPECT_THROW (barcode (smallDiagram(), options), BadArgumentException) << cut;
+  }
+}
+
+TEST (BarcodeSVG, SeveralEssentialBarsStaySeparate)
+{
+  // Four clusters among 500 finite bars: the finite bars are 2 pixels apart, the
+  // essential ones MIN_ESSENTIAL_PITCH, with a gap of 2 pixels between them.
+  PersistenceDiagram diagram;
+  for (int i = 0; i < 4; ++i)
+    diagram.push_back ({0, 0, INF});
+  for (int i = 1; i <= 500; ++i)
+    diagram.push_back ({0, 0, 0.001 * i});
+  const auto bars = withClass (parseXml (barcode (diagram)), "essential");
+  ASSERT_EQ (bars.size(), 4u);
+  for (std::size_t i = 1; i < bars.size(); ++i) {
+    const double top = number (*bars[i], "y");
+    const double previous_bottom =
+        number (*bars[i - 1], "y") + number (*bars[i - 1], "height");
+    EXPECT_NEAR (top - number (*bars[i - 1], "y"), pcl::tda::MIN_ESSENTIAL_PITCH, 0.11);
+    EXPECT_GE (top - previous_bottom, 1.9);
+  }
+}
+
+TEST (BarcodeSVG, DrawsTheCutLineAndTheUnit)
+{
+  PlotOptions options;
+  options.max_value = 0.4;
+  options.cut = 0.0123;
+  options.unit = "m";
+  const Element svg = parseXml (barcode (smallDiagram(), options));
+  const auto cuts = withClass (svg, "cut");
+  ASSERT_EQ (cuts.size(), 1u);
+  const auto panels = withClass (svg, "panel");
+  const double left = number (*panels[0], "x");
+  const double right = left + number (*panels[0], "width");
+  EXPECT_NEAR (number (*cuts[0], "x1"), left + (right - left) * 0.0123 / 0.4, 0.11);
+  EXPECT_EQ (number (*cuts[0], "x1"), number (*cuts[0], "x2"));
+  // From the top of the first panel down to the axis, past the last panel.
+  EXPECT_LE (number (*cuts[0], "y1"), number (*panels[0], "y"));
+  EXPECT_GE (number (*cuts[0], "y2"),
+             number (*panels[1], "y") + number (*panels[1], "height"));
+  EXPECT_EQ (texts (withClass (svg, "cut-label")),
+             (std::vector<std::string>{"cut 0.0123 m"}));
+  EXPECT_EQ (texts (withClass (svg, "axis-title")),
+             (std::vector<std::string>{"filtration value (m)"}));
+
+  // A cut beyond the data extends the axis; without a unit, none is named.
+  options = {};
+  options.cut = 0.5;
+  const Element beyond = parseXml (barcode (smallDiagram(), options));
+  EXPECT_EQ (texts (withClass (beyond, "cut-label")),
+             (std::vector<std::string>{"cut 0.5"}));
+  EXPECT_EQ (texts (withClass (beyond, "axis-title")),
+             (std::vector<std::string>{"filtration value"}));
+  EXPECT_EQ (texts (withClass (beyond, "tick-label")).back(), "0.5");
+
+  // No cut by default; the persistence diagram names the unit on both axes.
+  EXPECT_TRUE (withClass (parseXml (barcode (smallDiagram())), "cut").empty());
+  options = {};
+  options.unit = "mm";
+  const Element diagram = parseXml (persistenceDiagram (smallDiagram(), options));
+  EXPECT_TRUE (containsText (diagram, "birth (mm)"));
+  EXPECT_TRUE (containsText (diagram, "death (mm)"));
 }
 
 TEST (PersistencePlots, SaveWritesTheFileOrThrows)

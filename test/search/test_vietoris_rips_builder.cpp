@@ -301,5 +301,50 @@ TEST (VietorisRipsBuilder, RefusesHugeComplexBeforeAllocating)
   builder.setRadius (4.0);
   builder.setMemoryLimit (std::size_t (1) << 30);
   FilteredComplex complex;
+  testing::internal::CaptureStderr();
   EXPECT_FALSE (builder.compute (complex));
+  const std::string error = testing::internal::GetCapturedStderr();
+  // Refused on a sample (the edges are all 31,996,000 pairs).
+  EXPECT_NE (error.find ("would have about 3"), std::string::npos) << error;
+  EXPECT_NE (error.find ("(estimated from a sample)"), std::string::npos) << error;
+  EXPECT_NE (error.find ("over the memory limit of 1.0 GiB"), std::string::npos)
+      << error;
+
+  // Over the limit by triangles only, found from the count pass's bound and a
+  // sample: refused before the edges are listed, naming both sizes.
+  builder.setRadius (0.3);
+  builder.setMemoryLimit (std::size_t (64) << 20);
+  testing::internal::CaptureStderr();
+  EXPECT_FALSE (builder.compute (complex));
+  const std::string triangles_error = testing::internal::GetCapturedStderr();
+  EXPECT_NE (triangles_error.find (" triangles"), std::string::npos) << triangles_error;
+  EXPECT_NE (triangles_error.find ("64.0 MiB"), std::string::npos) << triangles_error;
+}
+
+// The build reports its progress in thousandths, never backwards, ending at 1000,
+// and the complex is the same with a callback as without.
+TEST (VietorisRipsBuilder, ReportsProgress)
+{
+  std::mt19937 random (41);
+  const Cloud::Ptr cloud = randomCloud (random, 20000, false);
+  for (const int dimension : {1, 2}) {
+    VietorisRipsBuilder<pcl::PointXYZ> builder;
+    builder.setInputCloud (cloud);
+    builder.setRadius (0.1);
+    builder.setMaxDimension (dimension);
+    FilteredComplex plain, reported;
+    ASSERT_TRUE (builder.compute (plain));
+    std::vector<std::size_t> seen;
+    builder.setProgressCallback ([&] (std::size_t done, std::size_t total) {
+      EXPECT_EQ (total, 1000u);
+      seen.push_back (done);
+    });
+    ASSERT_TRUE (builder.compute (reported));
+    ASSERT_GE (seen.size(), 5u) << "dimension " << dimension;
+    EXPECT_TRUE (std::is_sorted (seen.begin(), seen.end()))
+        << "dimension " << dimension;
+    EXPECT_EQ (seen.back(), 1000u);
+    EXPECT_EQ (reported.numEdges(), plain.numEdges());
+    EXPECT_EQ (reported.numTriangles(), plain.numTriangles());
+  }
 }

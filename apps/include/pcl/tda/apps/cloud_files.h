@@ -11,9 +11,12 @@
 namespace pcl {
 namespace tda {
 
-/** \brief Reads a PCD file for a tool, checking its header first (PCL's reader
- * can crash on a malformed file) and that it has the fields x, y and z.
- * \throws pcl::IOException saying what is wrong with the file */
+/** \brief Reads a PCD file for a tool, the one input layer of the tools: refuses
+ * what is not a regular file, checks the header and the size of the data
+ * (readPCDLayout()) before PCL's reader allocates, requires the fields x, y and z of
+ * one value each and gives them as 32-bit floats (converting double and integer
+ * coordinates). Organized clouds keep their width and height.
+ * \throws pcl::IOException naming the file and saying what is wrong with it */
 void
 loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud);
 

@@ -3,56 +3,126 @@
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
 #include <pcl/tda/apps/cloud_files.h>
-#include <pcl/tda/common/atomic_file.h>
+#include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/exceptions.h>
 
-#include <initializer_list>
+#include <cstdio>
 #include <string>
 
 namespace pcl {
 namespace tda {
 
-/** \brief Prints the timing line of PCL's tools: "[done, 12.3 ms : what]". */
-inline void
-printDone (const pcl::console::TicToc& timer, const std::string& what)
-{
-  pcl::console::print_info ("[done, ");
-  pcl::console::print_value ("%g", timer.toc());
-  pcl::console::print_info (" ms : %s]\n", what.c_str());
-}
+/** \brief The console of a tool, in the style of PCL's tools: a step prints
+ * "> Doing what " and, when done, "[done, 12.3 ms : result]" on the same line. The
+ * step line is flushed at once, so that messages of the work (on stderr) come after
+ * it, and an error first ends an unfinished step line, so that it stands on a line
+ * of its own. */
+class ToolConsole {
+public:
+  /** \brief Prints "> \a what \a value " (the value highlighted) and starts the
+   * step's timer. */
+  void
+  beginStep (const std::string& what, const std::string& value = "")
+  {
+    pcl::console::print_highlight ("%s ", what.c_str());
+    if (!value.empty())
+      pcl::console::print_value ("%s ", value.c_str());
+    std::fflush (stdout);
+    line_open_ = true;
+    timer_.tic();
+  }
 
-/** \brief Loads a tool's input PCD file, saying so on the console.
- * \return false, with the reason printed, when the file cannot be read */
-template <typename PointT>
-bool
-loadToolInput (const std::string& path, pcl::PointCloud<PointT>& cloud)
+  /** \brief Ends the step's line with "[done, t ms : \a result]". */
+  void
+  endStep (const std::string& result)
+  {
+    pcl::console::print_info ("[done, ");
+    pcl::console::print_value ("%g", timer_.toc());
+    pcl::console::print_info (" ms : %s]\n", result.c_str());
+    line_open_ = false;
+  }
+
+  /** \brief The milliseconds since the step began. */
+  double
+  stepMilliseconds () const
+  {
+    return timer_.toc();
+  }
+
+  /** \brief Ends an unfinished step line, before output of another kind. */
+  void
+  endLine ()
+  {
+    if (line_open_)
+      std::fputc ('\n', stdout);
+    std::fflush (stdout);
+    line_open_ = false;
+  }
+
+  /** \brief Prints \a message as an error, on a line of its own. */
+  void
+  error (const std::string& message)
+  {
+    endLine();
+    pcl::console::print_error ("%s\n", message.c_str());
+  }
+
+  /** \brief Loads a tool's input PCD file as a step (loadPointCloudFile()).
+   * \return false, with the reason printed, when the file cannot be read */
+  template <typename PointT>
+  bool
+  loadInput (const std::string& path, pcl::PointCloud<PointT>& cloud)
+  {
+    beginStep ("Loading", path);
+    try {
+      loadPointCloudFile (path, cloud);
+    }
+    catch (const pcl::PCLException& failure) {
+      error ("Cannot read the PCD file: " + errorMessage (failure));
+      return false;
+    }
+    return true;
+  }
+
+private:
+  pcl::console::TicToc timer_;
+  bool line_open_ = false;
+};
+
+/** \brief The main() of a tool: "-h" or "--help" prints the help only and exits
+ * with 0, fewer than two arguments print it and exit with 1; else prints \a intro,
+ * reads the options with \a parse and returns the exit code of \a run. A refusal
+ * (a pcl::PCLException thrown by either) prints its message and exits with 1. */
+template <typename Options>
+int
+runTool (int argc,
+         char** argv,
+         const std::string& intro,
+         void (*print_help) (const char* program),
+         void (*parse) (int argc, char** argv, Options& options),
+         int (*run) (const Options& options, ToolConsole& console))
 {
-  pcl::console::print_highlight ("Loading ");
-  pcl::console::print_value ("%s ", path.c_str());
+  if (helpRequested (argc, argv)) {
+    print_help (argv[0]);
+    return 0;
+  }
+  pcl::console::print_info (
+      "%s For more information, use: %s -h\n", intro.c_str(), argv[0]);
+  if (argc < 3) {
+    print_help (argv[0]);
+    return 1;
+  }
+  ToolConsole console;
   try {
-    loadPointCloudFile (path, cloud);
+    Options options;
+    parse (argc, argv, options);
+    return run (options, console);
   }
   catch (const pcl::PCLException& error) {
-    pcl::console::print_error ("\nCannot read the PCD file: %s\n",
-                               errorMessage (error).c_str());
-    return false;
+    console.error (errorMessage (error));
+    return 1;
   }
-  return true;
-}
-
-/** \brief True, with an error printed, when one of \a outputs (empty ones are
- * skipped) names the file \a input, directly or through a link: tools never
- * overwrite their input. */
-inline bool
-overwritesInput (const std::string& input, std::initializer_list<std::string> outputs)
-{
-  for (const std::string& output : outputs)
-    if (!output.empty() && (output == input || isSameFile (output, input))) {
-      pcl::console::print_error ("Refusing to overwrite the input file %s.\n",
-                                 input.c_str());
-      return true;
-    }
-  return false;
 }
 
 } // namespace tda

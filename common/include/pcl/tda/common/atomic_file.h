@@ -7,10 +7,57 @@
 namespace pcl {
 namespace tda {
 
-/** \brief Replaces a file so that readers see either its old content or the whole
- * new content, never a part: \a write_file writes a temporary file beside \a path
- * (whose name it is given), which then replaces \a path. \a write_file throws
- * pcl::IOException or returns false on failure.
+/** \brief The file that writing to \a path replaces: \a path itself or, when \a path
+ * is a symbolic link, the file it points to (link after link, whether that file
+ * exists or not), so that replacing the file keeps the link. */
+std::string
+linkTarget (const std::string& path);
+
+/** \brief A file being replaced so that readers see either its old content or the
+ * whole new content, never a part: the new content goes to temporary(), beside the
+ * file, and commit() renames it onto the file. A symbolic link at \a path stays a
+ * link (the file it points to is replaced) and the replaced file's permission bits
+ * are kept. The destructor removes a temporary file that was not committed. */
+class FileReplacement {
+public:
+  /** \brief Names the temporary file; creates nothing. */
+  explicit FileReplacement (const std::string& path);
+  ~FileReplacement();
+  FileReplacement (const FileReplacement&) = delete;
+  FileReplacement&
+  operator= (const FileReplacement&) = delete;
+
+  /** \brief The path given, as named in messages. */
+  const std::string&
+  path () const
+  {
+    return path_;
+  }
+
+  /** \brief The temporary file to write the new content to. */
+  const std::string&
+  temporary () const
+  {
+    return temporary_;
+  }
+
+  /** \brief Gives the temporary file the replaced file's permission bits and renames
+   * it onto that file.
+   * \throws pcl::IOException naming path() when the rename fails (the temporary file
+   * is removed and the file left as it was) */
+  void
+  commit ();
+
+private:
+  std::string path_;
+  std::string target_;
+  std::string temporary_;
+  bool committed_ = false;
+};
+
+/** \brief Replaces a file at once (see FileReplacement): \a write_file writes the
+ * temporary file whose name it is given, which then replaces \a path. \a write_file
+ * throws pcl::IOException or returns false on failure.
  * \throws pcl::IOException when the file cannot be written (the temporary file is
  * removed and \a path is left as it was)
  */

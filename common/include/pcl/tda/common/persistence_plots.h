@@ -3,11 +3,16 @@
 #include <pcl/tda/common/persistence_diagram.h>
 
 #include <cstddef>
+#include <limits>
 #include <ostream>
 #include <string>
 
 namespace pcl {
 namespace tda {
+
+/** \brief Rows of essential bars in a barcode are at least this many pixels apart
+ * (the bars 2 pixels less high). */
+constexpr double MIN_ESSENTIAL_PITCH = 8;
 
 /** \brief How to draw a barcode or a persistence diagram as SVG. */
 struct PlotOptions {
@@ -21,12 +26,22 @@ struct PlotOptions {
   double max_value = 0;
   /** \brief Width of the picture in pixels (at least 300); the height follows. */
   double width = 800;
+  /** \brief Unit of the filtration values, e.g. "m": named in the axis titles and
+   * after the cut's value; empty (the default) for none. */
+  std::string unit;
+  /** \brief A filtration value (finite, not negative) marked on a barcode by a
+   * vertical dashed line across the panels, labelled "cut" with the value and the
+   * unit, e.g. the distance at which clusters were taken; NaN (the default) for
+   * none. */
+  double cut = std::numeric_limits<double>::quiet_NaN();
 };
 
 /** \brief Writes the barcode of \a diagram as an SVG picture (thesis Fig. 4.3 and
  * 6.1): one horizontal bar per interval of non-zero length, one panel per dimension
  * from H0 down, bars sorted by birth, essential classes running to the right end
- * with a red triangle, and an axis in filtration units.
+ * with a red triangle (each at least MIN_ESSENTIAL_PITCH pixels apart, so that
+ * several stay visibly separate), an axis in filtration units and, with
+ * PlotOptions::cut, the cut line.
  * \throws pcl::BadArgumentException on invalid options, a dimension outside 0..31,
  * a non-finite birth or a death before the birth
  */

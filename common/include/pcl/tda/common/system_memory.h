@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 namespace pcl {
 namespace tda {
@@ -9,6 +10,15 @@ namespace tda {
  * the default memory limits of the complex builders. */
 std::size_t
 physicalMemoryBytes ();
+
+/** \brief The default memory limit of the complex builders: half of the physical
+ * memory, or no limit (the largest size) where it cannot be read. */
+std::size_t
+defaultMemoryLimit ();
+
+/** \brief A size in bytes as people read it: "512 KiB", "37.5 MiB", "4.2 GiB". */
+std::string
+formatBytes (double bytes);
 
 } // namespace tda
 } // namespace pcl

@@ -2,7 +2,7 @@
 
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/point3d.h>
-#include <pcl/tda/common/spanning_forest.h>
+#include <pcl/tda/search/parallel_progress.h>
 #include <pcl/tda/search/uniform_grid.h>
 
 #include <algorithm>
@@ -35,32 +35,60 @@ struct AcceptAllPairs {
 int
 resolveThreads (unsigned int threads);
 
-/** \brief Count pass over a grid of cell size >= \a radius: offsets[c] is the first
- * position of the edges found from cell c, offsets.back() the number of edges. */
+/** \brief What the count pass of the radius edges finds. */
+struct RadiusEdgeCounts {
+  /** offsets[c]: the first position of the edges found from cell c; offsets.back():
+   * the number of edges. */
+  std::vector<std::uint64_t> offsets;
+  /** The sum over the points of (later neighbours choose 2): an upper bound on the
+   * triangles of the clique complex, each counted from its first vertex. */
+  std::uint64_t triangle_bound = 0;
+};
+
+/** \brief Count pass over a grid of cell size >= \a radius, in parallel, telling
+ * \a progress (when set) the points done. */
 template <typename Accept>
-std::vector<std::uint64_t>
+RadiusEdgeCounts
 countRadiusEdges (const UniformGrid& grid,
                   const std::vector<Point3d>& points,
                   double radius,
                   const Accept& accept,
-                  unsigned int threads)
+                  unsigned int threads,
+                  const ProgressCallback& progress = {})
 {
   const auto num_cells = static_cast<std::int64_t> (grid.numCells());
-  std::vector<std::uint64_t> offsets (grid.numCells() + 1, 0);
-#pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
+  ParallelProgress tracker (progress, points.size());
+  RadiusEdgeCounts counts;
+  counts.offsets.assign (grid.numCells() + 1, 0);
+  std::uint64_t triangle_bound = 0;
+#pragma omp parallel for schedule(dynamic, 64) reduction(+ : triangle_bound)           \
+    num_threads(resolveThreads (threads))
   for (std::int64_t c = 0; c < num_cells; ++c) {
-    std::uint64_t count = 0;
+    std::uint64_t count = 0, of_point = 0;
+    std::uint32_t current = grid.pointAt (grid.cellBegin (c));
     grid.forEachCandidatePair (c, [&] (std::uint32_t a, std::uint32_t b) {
-      count += withinRadius (points[a], points[b], radius) && accept (a, b);
+      if (a != current) { // the pairs come point by point
+        triangle_bound += of_point * (of_point - 1) / 2;
+        current = a;
+        of_point = 0;
+      }
+      const std::uint64_t edge =
+          withinRadius (points[a], points[b], radius) && accept (a, b);
+      count += edge;
+      of_point += edge;
     });
-    offsets[c + 1] = count;
+    triangle_bound += of_point * (of_point - 1) / 2;
+    counts.offsets[c + 1] = count;
+    tracker.advance (grid.cellSize (c));
   }
-  std::partial_sum (offsets.begin(), offsets.end(), offsets.begin());
-  return offsets;
+  std::partial_sum (
+      counts.offsets.begin(), counts.offsets.end(), counts.offsets.begin());
+  counts.triangle_bound = triangle_bound;
+  return counts;
 }
 
-/** \brief Fill pass: the edges counted by countRadiusEdges() (same arguments), in
- * the order of the cells, not sorted. */
+/** \brief Fill pass: the edges counted by countRadiusEdges() (same arguments, and
+ * its offsets), in the order of the cells, not sorted. */
 template <typename Accept>
 std::vector<FilteredEdge>
 listRadiusEdges (const UniformGrid& grid,
@@ -68,10 +96,12 @@ listRadiusEdges (const UniformGrid& grid,
                  double radius,
                  const Accept& accept,
                  const std::vector<std::uint64_t>& offsets,
-                 unsigned int threads)
+                 unsigned int threads,
+                 const ProgressCallback& progress = {})
 {
   std::vector<FilteredEdge> edges (offsets.back());
   const auto num_cells = static_cast<std::int64_t> (grid.numCells());
+  ParallelProgress tracker (progress, points.size());
 #pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
   for (std::int64_t c = 0; c < num_cells; ++c) {
     std::uint64_t position = offsets[c];
@@ -80,6 +110,7 @@ listRadiusEdges (const UniformGrid& grid,
         edges[position++] = {
             std::min (a, b), std::max (a, b), distance (points[a], points[b])};
     });
+    tracker.advance (grid.cellSize (c));
   }
   return edges;
 }
@@ -111,36 +142,6 @@ listEdgesBySearch (const std::vector<Point3d>& points,
  * the result does not depend on the number of threads. */
 void
 sortEdges (std::vector<FilteredEdge>& edges, unsigned int threads);
-
-/** \brief The minimum spanning forest of the radius graph of \a points: the only
- * edges that H0 of the graph's filtration needs, since the negative edges of the
- * elder rule form that forest (thesis Sec 4.1.4). The edges are the pairs within
- * \a radius that pass \a accept (e.g. the colour and normal tests of region
- * growing), found on a UniformGrid of cell size \a radius; the forest is taken by
- * minimumSpanningForest().
- * \param[in] points the points, vertex v at points[v]
- * \param[in] radius the largest edge length (> 0)
- * \param[in] accept the extra test of a pair (a, b) of vertex ids within the radius
- * \param[in] threads OpenMP threads (0: OpenMP's default)
- * \param[out] num_graph_edges number of edges of the radius graph
- * \return the forest's edges in filtration order
- * \throws pcl::BadArgumentException as UniformGrid */
-template <typename Accept>
-std::vector<FilteredEdge>
-radiusGraphSpanningForest (const std::vector<Point3d>& points,
-                           double radius,
-                           const Accept& accept,
-                           unsigned int threads,
-                           std::size_t& num_graph_edges)
-{
-  const UniformGrid grid (points, radius, threads);
-  const std::vector<std::uint64_t> offsets =
-      countRadiusEdges (grid, points, radius, accept, threads);
-  num_graph_edges = offsets.back();
-  std::vector<FilteredEdge> edges =
-      listRadiusEdges (grid, points, radius, accept, offsets, threads);
-  return minimumSpanningForest (points.size(), edges);
-}
 
 } // namespace tda
 } // namespace pcl

@@ -25,10 +25,12 @@ namespace tda {
  */
 class UniformGrid {
 public:
-  /** \brief Sorts the points into cells of size \a cell_size, with \a threads
-   * OpenMP threads (0: OpenMP's default).
+  /** \brief Sorts the (finite) points into cells of size \a cell_size, with
+   * \a threads OpenMP threads (0: OpenMP's default). Any extent works: cell
+   * coordinates beyond 2^62 are clamped, which keeps every pair within the cell size
+   * in the same or neighbouring cells.
    * \throws pcl::BadArgumentException when \a cell_size is not positive and finite,
-   * or so small against the extent of the points that cells cannot be indexed */
+   * or there are 2^32 - 1 points or more */
   UniformGrid (const std::vector<Point3d>& points,
                double cell_size,
                unsigned int threads = 0);
@@ -46,6 +48,37 @@ public:
     return cell_begin_[cell + 1] - cell_begin_[cell];
   }
 
+  /** \brief Runs [begin, end) of positions: the candidates after the point at
+   * position \a position (in cell \a cell): the later points of its cell, and
+   * the points of its 13 later neighbour cells. */
+  using Runs = std::array<std::pair<std::uint32_t, std::uint32_t>, 5>;
+
+  /** \brief The runs of positions of the candidates after position \a position,
+   * which must lie in cell \a cell. */
+  Runs
+  laterCandidates (std::size_t cell, std::uint32_t position) const
+  {
+    Runs runs = runs_[cell];
+    runs[0].first = position + 1; // the cell's later points, then cell (x, y, z + 1)
+    return runs;
+  }
+
+  /** \brief The point (index into the points given at construction) at position
+   * \a position of the cell order. */
+  std::uint32_t
+  pointAt (std::uint32_t position) const
+  {
+    return point_ids_[position];
+  }
+
+  /** \brief The first position of cell \a cell (cellBegin(numCells()) is the
+   * number of points). */
+  std::uint32_t
+  cellBegin (std::size_t cell) const
+  {
+    return cell_begin_[cell];
+  }
+
   /** \brief Calls \a visit(a, b) for every candidate pair of cell \a cell: a in the
    * cell, b after a in the cell or in one of its 13 later neighbours; a and b are
    * indices into the points given at construction. Over all cells, every pair of
@@ -55,13 +88,10 @@ public:
   void
   forEachCandidatePair (std::size_t cell, Visit visit) const
   {
-    const std::uint32_t begin = cell_begin_[cell], end = cell_begin_[cell + 1];
-    for (std::uint32_t i = begin; i < end; ++i) {
+    for (std::uint32_t i = cell_begin_[cell]; i < cell_begin_[cell + 1]; ++i) {
       const std::uint32_t a = point_ids_[i];
-      for (std::uint32_t j = i + 1; j < runs_[cell][0].second; ++j)
-        visit (a, point_ids_[j]); // the cell's later points, then cell (x, y, z + 1)
-      for (std::size_t run = 1; run < runs_[cell].size(); ++run)
-        for (std::uint32_t j = runs_[cell][run].first; j < runs_[cell][run].second; ++j)
+      for (const auto& [begin, end] : laterCandidates (cell, i))
+        for (std::uint32_t j = begin; j < end; ++j)
           visit (a, point_ids_[j]);
     }
   }
@@ -73,14 +103,11 @@ public:
 
 private:
   using CellKey = std::array<std::int64_t, 3>;
-  /** Runs [begin, end) of point_ids_: the cell itself with cell (x, y, z + 1), then
-   * the columns (x, y + 1), (x + 1, y - 1), (x + 1, y), (x + 1, y + 1), z - 1 .. z + 1.
-   */
-  using Stencil = std::array<std::pair<std::uint32_t, std::uint32_t>, 5>;
-
   std::vector<std::uint32_t> point_ids_;  // points grouped by cell, cells in key order
   std::vector<std::uint32_t> cell_begin_; // first position of every cell, and the end
-  std::vector<Stencil> runs_;             // one per cell
+  // Per cell, runs of point_ids_: the cell itself with cell (x, y, z + 1), then the
+  // columns (x, y + 1), (x + 1, y - 1), (x + 1, y), (x + 1, y + 1), z - 1 .. z + 1.
+  std::vector<Runs> runs_;
 };
 
 } // namespace tda

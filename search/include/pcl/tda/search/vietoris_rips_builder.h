@@ -2,6 +2,8 @@
 
 #include <pcl/search/search.h>
 #include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/progress.h>
+#include <pcl/tda/search/complex_size.h>
 #include <pcl/pcl_base.h>
 
 #include <cstddef>
@@ -130,6 +132,15 @@ public:
     return threads_;
   }
 
+  /** \brief Sets a callback told the progress of compute() in thousandths (done,
+   * 1000), from one thread, e.g. to drive a ProgressBar: long builds are not
+   * silent. */
+  void
+  setProgressCallback (const ProgressCallback& progress)
+  {
+    progress_ = progress;
+  }
+
   /** \brief Builds the complex of the input points (or of the indexed ones).
    * On failure (no input, no finite point, radius <= 0, dimension not 1 or 2,
    * complex over the memory limit) prints a PCL_ERROR and leaves \a complex empty.
@@ -160,15 +171,44 @@ protected:
   }
 
 private:
-  /** Checks \a bytes against the memory limit, with an error naming the sizes. */
+  /** The ends of the phases of compute(), for its progress. */
+  enum BuildPhase {
+    START,
+    EDGES_COUNTED,
+    EDGES_LISTED,
+    EDGES_SORTED,
+    TRIANGLES_COUNTED,
+    DONE
+  };
+
+  /** Where \a phase ends, in thousandths of the build. */
+  std::size_t
+  permilleAt (BuildPhase phase) const;
+
+  /** The progress callback of a phase from \a first to \a last (none without a
+   * callback). */
+  ProgressCallback
+  phaseProgress (BuildPhase first, BuildPhase last) const;
+
+  /** Tells the callback that \a phase is done. */
+  void
+  reportPhase (BuildPhase phase) const;
+
+  /** The memory limit with the builder's bytes per simplex. */
+  MemoryBudget
+  memoryBudget () const;
+
+  /** Checks \a size against the memory limit and the 32-bit ids; false after a
+   * PCL_ERROR naming the sizes. */
   bool
-  fitsMemory (std::size_t edges, std::size_t triangles, bool triangles_known) const;
+  fitsMemory (const ComplexSize& size) const;
 
   double radius_ = 0.0;
   int max_dimension_ = 2;
   SearchPtr search_;
   std::size_t memory_limit_;
   unsigned int threads_ = 0;
+  ProgressCallback progress_;
   std::size_t skipped_points_ = 0;
   VietorisRipsTimings timings_;
   std::string class_name_ = "VietorisRipsBuilder";

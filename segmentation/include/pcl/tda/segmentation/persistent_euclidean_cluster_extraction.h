@@ -3,6 +3,7 @@
 #include <pcl/search/search.h>
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/persistence_result.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/pcl_base.h>
 #include <pcl/PointIndices.h>
 
@@ -14,6 +15,26 @@
 namespace pcl {
 namespace tda {
 
+/** \brief The automatic cluster distance of chooseClusterDistance() and how it was
+ * found. */
+struct ClusterDistanceChoice {
+  /** \brief The chosen distance, in (0, max distance]. */
+  double distance = 0.0;
+  /** \brief The sampling scale: the median nearest-neighbour distance of the points
+   * (0 when no positive distance exists). */
+  double sampling_scale = 0.0;
+  /** \brief The chosen step [low, high) of the count of significant components
+   * (see the rule); distance is its geometric middle. Both 0 when there is none. */
+  double low = 0.0;
+  double high = 0.0;
+  /** \brief The number of significant components in that interval. */
+  std::size_t num_clusters = 0;
+  /** \brief Whether the H0 diagram shows a clear gap: the step spans a factor of at
+   * least the gap ratio q and is at least q times as long (in log) as every other
+   * step with two clusters or more. */
+  bool clear = false;
+};
+
 /** \brief The automatic cluster distance (see
  * PersistentEuclideanClusterExtraction::setAutoMaxDistance(), which states the rule)
  * from the H0 persistence of a complex built up to \a max_distance.
@@ -22,16 +43,18 @@ namespace tda {
  * \param[in] max_distance the end of the filtration
  * \param[in] min_cluster_size components of at least this many points (and at
  * least 2) are the significant ones
- * \param[in] gap_ratio the ratio (> 1) that makes a component dense (born within
- * this factor of the eldest's birth) and long-lived (dies at least this factor
- * after its birth)
- * \return a distance in (0, max_distance] */
-double
+ * \param[in] gap_ratio the ratio q (> 1): a split must be stable over a factor q
+ * of scales to be taken, and q times longer (in log) than any other to be clear
+ * \param[in] min_distance a floor from the caller, e.g. a voxel grid's leaf size
+ * \return the distance, in (0, max_distance], and how it was chosen; max_distance,
+ * not clear, when the floor is not below it or no significant component exists */
+ClusterDistanceChoice
 chooseClusterDistance (const FilteredComplex& complex,
                        const PersistenceResult& h0,
                        double max_distance,
                        std::size_t min_cluster_size,
-                       double gap_ratio);
+                       double gap_ratio,
+                       double min_distance);
 
 /** \brief Euclidean cluster extraction by topological persistence (thesis Sec 4.1,
  * Alg 4.6): a drop-in replacement for pcl::EuclideanClusterExtraction that also
@@ -213,27 +236,33 @@ public:
   }
 
   /** \brief Lets extract() choose the cluster distance from the H0 diagram of the
-   * filtration up to max distance (default false). The rule, a persistence rule on
-   * the would-be clusters (thesis Sec 4.1.4-4.1.5), with ratio q = the gap ratio:
+   * filtration up to max distance (default false). The rule (chooseClusterDistance()),
+   * with q the gap ratio (setAutoGapRatio()):
    *
-   * 1. Significant bars. A component is born as a would-be cluster at the scale at
-   *    which it first has max(min cluster size, 2) points, and dies when it merges
-   *    with an older one (the elder rule on these births); the eldest lives to max
-   *    distance. A bar is dense when born at most q times later than the eldest,
-   *    i.e. at the sampling scale; sparse bars (born later: clutter, remnants of a
-   *    removed plane) are never clusters.
-   * 2. The number of clusters k. The other dense bars are sorted by log-lifetime
-   *    log(death / birth), a virtual bar of lifetime 0 is put below them, and k is
-   *    1 (the eldest) plus the number of bars above the largest gap among the bars
-   *    that live at least q times their birth (k = 1 when none does).
-   * 3. The distance. Within the window where those k bars all exist and no sparse
-   *    bar has died yet, the longest interval (by ratio of its ends) over which
-   *    exactly k significant components exist (or, without one, the count nearest
-   *    k) is taken, and the distance is its geometric middle.
+   * 1. Would-be clusters. Replaying the minimum spanning forest's edges (the H0
+   *    deaths) in order, a component becomes significant when it first has
+   *    max(min cluster size, 2) points; the count of significant components rises
+   *    by 1 there and falls by 1 when two significant components merge. It is a step
+   *    function of the scale.
+   * 2. The floor: the larger of the sampling scale, the median nearest-neighbour
+   *    distance of the points (each point's shortest spanning forest edge), and the
+   *    caller's floor (setAutoMinDistance(), e.g. a voxel leaf). The distance is
+   *    never below it.
+   * 3. The candidates: the steps of the count over (floor, max distance], each
+   *    [low, high) measured by log(high / low). The longest step with two clusters
+   *    or more is taken if it spans a factor of at least q; otherwise the longest
+   *    step with one cluster (all points one object), if any. The earliest of
+   *    equally long steps wins.
+   * 4. The distance is the geometric middle sqrt(low high) of that step. The choice
+   *    is clear when the step spans a factor of at least q and is at least q times
+   *    as long (in log) as every other step with two clusters or more; otherwise
+   *    extract() prints a PCL_WARN and getAutoDistanceIsClear() is false.
    *
-   * The relative (scale-free) lifetimes make the rule independent of the units and
-   * of the point spacing. Max distance bounds the search and should be a generous
-   * upper bound, e.g. twice the gap expected between objects. */
+   * Only ratios of scales enter, so the rule does not depend on the units; it is
+   * deterministic and, as the diagram, independent of the input order and of the
+   * number of threads. Max distance bounds the search and should be a generous upper
+   * bound, e.g. twice the gap expected between objects; a one-cluster step ending
+   * there counts only when no split is clear. */
   void
   setAutoMaxDistance (bool enabled)
   {
@@ -247,8 +276,9 @@ public:
   }
 
   /** \brief Sets the ratio q (> 1, default DEFAULT_GAP_RATIO) of the rule of
-   * setAutoMaxDistance(): a would-be cluster must be born within q times the
-   * eldest's birth and live at least q times its birth. */
+   * setAutoMaxDistance(): a split into clusters is taken only when it is stable over
+   * a factor q of scales, and is clear when also q times longer (in log) than any
+   * other split. */
   void
   setAutoGapRatio (double ratio)
   {
@@ -259,6 +289,41 @@ public:
   getAutoGapRatio () const
   {
     return gap_ratio_;
+  }
+
+  /** \brief Sets a floor (>= 0, default 0) of the rule of setAutoMaxDistance(): the
+   * chosen distance is never below it, e.g. the leaf size of a voxel grid applied
+   * before. */
+  void
+  setAutoMinDistance (double min_distance)
+  {
+    auto_min_distance_ = min_distance;
+  }
+
+  double
+  getAutoMinDistance () const
+  {
+    return auto_min_distance_;
+  }
+
+  /** \brief Bytes per edge of the radius graph at the peak of extract(); the memory
+   * limit is checked against it before the edges are stored. */
+  static constexpr std::size_t BYTES_PER_EDGE = sizeof (FilteredEdge);
+
+  /** \brief Sets the memory the radius graph may take, in bytes; a larger graph is
+   * refused in bounded time before it is stored (far over: from a sample of the
+   * points; otherwise after an exact count). Default: half of the physical memory
+   * (no limit where it cannot be read). */
+  void
+  setMemoryLimit (std::size_t bytes)
+  {
+    memory_limit_ = bytes;
+  }
+
+  std::size_t
+  getMemoryLimit () const
+  {
+    return memory_limit_;
   }
 
   /** \brief Sets the number of OpenMP threads of the radius graph build (0: OpenMP's
@@ -298,6 +363,16 @@ public:
   getChosenDistance () const
   {
     return chosen_distance_;
+  }
+
+  /** \brief Whether the H0 diagram of the last extract() with setAutoMaxDistance(true)
+   * showed a clear gap (ClusterDistanceChoice::clear); when not, extract() printed a
+   * PCL_WARN and the chosen distance is a guess. False without the automatic
+   * distance. */
+  bool
+  getAutoDistanceIsClear () const
+  {
+    return auto_distance_is_clear_;
   }
 
   /** \brief Number of components larger than the max cluster size in the last
@@ -346,10 +421,13 @@ private:
   unsigned int filtration_steps_ = 0;
   bool auto_max_distance_ = false;
   double gap_ratio_ = DEFAULT_GAP_RATIO;
+  double auto_min_distance_ = 0.0;
   unsigned int threads_ = 0;
+  std::size_t memory_limit_ = defaultMemoryLimit();
 
   PersistenceDiagram diagram_;
   double chosen_distance_ = 0.0;
+  bool auto_distance_is_clear_ = false;
   std::size_t num_oversized_clusters_ = 0;
   std::size_t num_edges_ = 0;
   std::string class_name_ = "PersistentEuclideanClusterExtraction";

@@ -6,6 +6,7 @@
 #include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/clique_complex.h>
+#include <pcl/tda/search/complex_size.h>
 #include <pcl/tda/search/radius_edges.h>
 #include <pcl/tda/search/uniform_grid.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
@@ -19,40 +20,78 @@ namespace tda {
 
 template <typename PointT>
 VietorisRipsBuilder<PointT>::VietorisRipsBuilder()
-: memory_limit_ (physicalMemoryBytes() > 0 ? physicalMemoryBytes() / 2
-                                           : std::numeric_limits<std::size_t>::max())
+: memory_limit_ (defaultMemoryLimit())
 {}
 
 template <typename PointT>
-bool
-VietorisRipsBuilder<PointT>::fitsMemory (std::size_t edges,
-                                         std::size_t triangles,
-                                         bool triangles_known) const
+MemoryBudget
+VietorisRipsBuilder<PointT>::memoryBudget() const
 {
-  const std::size_t bytes = edges * BYTES_PER_EDGE + triangles * BYTES_PER_TRIANGLE;
-  const bool ids_fit = edges < INVALID_SIMPLEX && triangles < INVALID_SIMPLEX;
-  if (bytes <= memory_limit_ && ids_fit)
+  return {memory_limit_, BYTES_PER_EDGE, max_dimension_ == 2 ? BYTES_PER_TRIANGLE : 0};
+}
+
+template <typename PointT>
+std::size_t
+VietorisRipsBuilder<PointT>::permilleAt (BuildPhase phase) const
+{
+  // Where each phase ends, in thousandths of the build: the triangle passes are the
+  // long ones when there are triangles.
+  constexpr std::size_t WITH_TRIANGLES[] = {0, 150, 300, 400, 700, 1000};
+  constexpr std::size_t EDGES_ONLY[] = {0, 350, 700, 1000, 1000, 1000};
+  return (max_dimension_ == 2 ? WITH_TRIANGLES : EDGES_ONLY)[phase];
+}
+
+template <typename PointT>
+ProgressCallback
+VietorisRipsBuilder<PointT>::phaseProgress (BuildPhase first, BuildPhase last) const
+{
+  if (!progress_)
+    return {};
+  const std::size_t begin = permilleAt (first), end = permilleAt (last);
+  return [this, begin, end] (std::size_t done, std::size_t total) {
+    progress_ (begin + (end - begin) * done / std::max<std::size_t> (total, 1), 1000);
+  };
+}
+
+template <typename PointT>
+void
+VietorisRipsBuilder<PointT>::reportPhase (BuildPhase phase) const
+{
+  if (progress_)
+    progress_ (permilleAt (phase), 1000);
+}
+
+template <typename PointT>
+bool
+VietorisRipsBuilder<PointT>::fitsMemory (const ComplexSize& size) const
+{
+  const bool ids_fit = size.edges < INVALID_SIMPLEX && size.triangles < INVALID_SIMPLEX;
+  if (memoryBudget().fits (size.edges, size.triangles) && ids_fit)
     return true;
-  const std::string size =
-      std::to_string (edges) + " edges" +
-      (triangles_known ? " and " + std::to_string (triangles) + " triangles"
-                       : " (triangles not counted yet)");
-  if (!ids_fit)
+  const char* about = size.exact ? "" : "about ";
+  std::string sizes = about + std::to_string (std::llround (size.edges)) + " edges";
+  if (max_dimension_ == 2 && size.triangles > 0.0)
+    sizes += std::string (" and ") + about +
+             std::to_string (std::llround (size.triangles)) + " triangles";
+  if (!size.exact)
+    sizes += " (estimated from a sample)";
+  if (!memoryBudget().fits (size.edges, size.triangles))
+    PCL_ERROR ("[pcl::tda::%s::compute] The complex of radius %g would have %s, "
+               "%s%s, over the memory limit of %s. Use a smaller radius, a voxel grid, "
+               "or a larger limit (setMemoryLimit()).\n",
+               getClassName().c_str(),
+               radius_,
+               sizes.c_str(),
+               about,
+               formatBytes (memoryBudget().bytes (size.edges, size.triangles)).c_str(),
+               formatBytes (static_cast<double> (memory_limit_)).c_str());
+  else
     PCL_ERROR ("[pcl::tda::%s::compute] The complex of radius %g would have %s: more "
                "than 2^32 - 1 simplices of one dimension. Use a smaller radius or a "
                "voxel grid.\n",
                getClassName().c_str(),
                radius_,
-               size.c_str());
-  else
-    PCL_ERROR ("[pcl::tda::%s::compute] The complex of radius %g would have %s, "
-               "about %.1f MiB, over the memory limit of %.1f MiB. Use a smaller "
-               "radius, a voxel grid, or setMemoryLimit().\n",
-               getClassName().c_str(),
-               radius_,
-               size.c_str(),
-               bytes / 1048576.0,
-               memory_limit_ / 1048576.0);
+               sizes.c_str());
   return false;
 }
 
@@ -124,9 +163,11 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     };
     const std::vector<std::uint64_t> offsets =
         countEdgesBySearch (points, radius_, candidates, threads_);
-    if (!fitsMemory (offsets.back(), 0, false))
+    reportPhase (EDGES_COUNTED);
+    if (!fitsMemory ({static_cast<double> (offsets.back()), 0.0, true}))
       return fail();
     edges = listEdgesBySearch (points, radius_, candidates, offsets, threads_);
+    reportPhase (EDGES_LISTED);
   }
   else {
     std::unique_ptr<UniformGrid> grid;
@@ -139,16 +180,33 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
                  errorMessage (error).c_str());
       return fail();
     }
-    const std::vector<std::uint64_t> offsets =
-        countRadiusEdges (*grid, points, radius_, AcceptAllPairs{}, threads_);
-    if (!fitsMemory (offsets.back(), 0, false))
+    // Refused in bounded time when far over the limit (bounds, then a sample).
+    RadiusEdgeCounts counts;
+    ComplexSize size;
+    if (!countRadiusEdgesWithinBudget (*grid,
+                                       points,
+                                       radius_,
+                                       AcceptAllPairs{},
+                                       threads_,
+                                       memoryBudget(),
+                                       counts,
+                                       size,
+                                       phaseProgress (START, EDGES_COUNTED))) {
+      fitsMemory (size);
       return fail();
-    edges =
-        listRadiusEdges (*grid, points, radius_, AcceptAllPairs{}, offsets, threads_);
+    }
+    edges = listRadiusEdges (*grid,
+                             points,
+                             radius_,
+                             AcceptAllPairs{},
+                             counts.offsets,
+                             threads_,
+                             phaseProgress (EDGES_COUNTED, EDGES_LISTED));
   }
   timings_.neighbor_search = watch.getTimeSeconds();
   watch.reset();
   sortEdges (edges, threads_);
+  reportPhase (EDGES_SORTED);
   timings_.edges = watch.getTimeSeconds();
   watch.reset();
 
@@ -156,12 +214,16 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
   std::vector<FilteredTriangle> triangles;
   if (max_dimension_ == 2) {
     const EdgeAdjacency adjacency = buildEdgeAdjacency (points.size(), edges);
-    const std::vector<std::uint64_t> offsets =
-        countTriangles (edges, adjacency, threads_);
-    if (!fitsMemory (edges.size(), offsets.back(), true))
+    const std::vector<std::uint64_t> offsets = countTriangles (
+        edges, adjacency, threads_, phaseProgress (EDGES_SORTED, TRIANGLES_COUNTED));
+    if (!fitsMemory ({static_cast<double> (edges.size()),
+                      static_cast<double> (offsets.back()),
+                      true}))
       return fail();
-    triangles = fillTriangles (edges, adjacency, offsets, threads_);
+    triangles = fillTriangles (
+        edges, adjacency, offsets, threads_, phaseProgress (TRIANGLES_COUNTED, DONE));
   }
+  reportPhase (DONE);
   timings_.triangles = watch.getTimeSeconds();
 
   complex = FilteredComplex::adoptValidParts (

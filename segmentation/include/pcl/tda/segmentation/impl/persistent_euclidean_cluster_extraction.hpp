@@ -5,7 +5,8 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>
 #include <pcl/tda/common/persistent_components.h>
-#include <pcl/tda/search/radius_edges.h>
+#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/search/complex_size.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 
@@ -44,6 +45,14 @@ PersistentEuclideanClusterExtraction<PointT>::checkParameters() const
                gap_ratio_);
     return false;
   }
+  if (auto_max_distance_ &&
+      !(auto_min_distance_ >= 0.0 && std::isfinite (auto_min_distance_))) {
+    PCL_ERROR ("[pcl::tda::%s::extract] The auto min distance must be a finite number "
+               "of at least 0, not %g.\n",
+               name,
+               auto_min_distance_);
+    return false;
+  }
   return true;
 }
 
@@ -80,6 +89,7 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
     builder.setRadius (radius);
     builder.setMaxDimension (1);
     builder.setNumberOfThreads (threads_);
+    builder.setMemoryLimit (memory_limit_);
     builder.setSearchMethod (tree_);
     if (!builder.compute (complex)) {
       PCL_ERROR ("[pcl::tda::%s::extract] Cannot build the radius graph (see above).\n",
@@ -110,19 +120,21 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
       points.push_back ({point.x, point.y, point.z});
     }
   }
+  const MemoryBudget budget{memory_limit_, BYTES_PER_EDGE, 0};
+  std::vector<FilteredEdge> forest;
+  ComplexSize size;
+  bool fits = false;
   try {
-    std::vector<FilteredEdge> forest;
     if (pcl_distance_test_) {
       const auto accept = [this, &point_of] (SimplexIndex a, SimplexIndex b) {
         return passesPCLDistanceTest (point_of[a], point_of[b]);
       };
-      forest = radiusGraphSpanningForest (points, radius, accept, threads_, num_edges_);
+      fits = radiusGraphSpanningForest (
+          points, radius, accept, threads_, budget, forest, size);
     }
     else
-      forest = radiusGraphSpanningForest (
-          points, radius, AcceptAllPairs{}, threads_, num_edges_);
-    complex = FilteredComplex::adoptValidParts (
-        points.size(), std::move (forest), {}, std::move (point_of));
+      fits = radiusGraphSpanningForest (
+          points, radius, AcceptAllPairs{}, threads_, budget, forest, size);
   }
   catch (const pcl::PCLException& error) {
     PCL_ERROR ("[pcl::tda::%s::extract] %s\n",
@@ -130,6 +142,23 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
                errorMessage (error).c_str());
     return false;
   }
+  if (!fits) {
+    PCL_ERROR ("[pcl::tda::%s::extract] The radius graph of max distance %g would have "
+               "%s%.0f edges%s, %s%s, over the memory limit of %s. Use a smaller max "
+               "distance, a voxel grid, or a larger limit (setMemoryLimit()).\n",
+               getClassName().c_str(),
+               max_distance_,
+               size.exact ? "" : "about ",
+               size.edges,
+               size.exact ? "" : " (estimated from a sample)",
+               size.exact ? "" : "about ",
+               formatBytes (budget.bytes (size.edges, 0.0)).c_str(),
+               formatBytes (static_cast<double> (memory_limit_)).c_str());
+    return false;
+  }
+  num_edges_ = static_cast<std::size_t> (size.edges);
+  complex = FilteredComplex::adoptValidParts (
+      points.size(), std::move (forest), {}, std::move (point_of));
   return true;
 }
 
@@ -141,6 +170,7 @@ PersistentEuclideanClusterExtraction<PointT>::extract (
   clusters.clear();
   diagram_.clear();
   chosen_distance_ = 0.0;
+  auto_distance_is_clear_ = false;
   num_oversized_clusters_ = 0;
   num_edges_ = 0;
   if (!input_) {
@@ -178,9 +208,26 @@ PersistentEuclideanClusterExtraction<PointT>::extract (
   const PersistenceResult h0 = computeH0Persistence (complex);
   diagram_ = steppedH0Diagram (complex, h0, max_distance_, filtration_steps_);
   chosen_distance_ = max_distance_;
-  if (auto_max_distance_)
-    chosen_distance_ = chooseClusterDistance (
-        complex, h0, max_distance_, min_pts_per_cluster_, gap_ratio_);
+  if (auto_max_distance_) {
+    const ClusterDistanceChoice choice = chooseClusterDistance (complex,
+                                                                h0,
+                                                                max_distance_,
+                                                                min_pts_per_cluster_,
+                                                                gap_ratio_,
+                                                                auto_min_distance_);
+    chosen_distance_ = choice.distance;
+    auto_distance_is_clear_ = choice.clear;
+    if (!choice.clear)
+      PCL_WARN ("[pcl::tda::%s::extract] The H0 diagram shows no clear gap: the "
+                "automatic distance %g (%zu clusters, stable from %g to %g; sampling "
+                "scale %g) is a guess. Check the barcode, or set the distance.\n",
+                getClassName().c_str(),
+                chosen_distance_,
+                choice.num_clusters,
+                choice.low,
+                choice.high,
+                choice.sampling_scale);
+  }
 
   std::vector<pcl::Indices> components = persistentComponents (
       complex,

@@ -1,0 +1,715 @@
+#include <pcl/tda/generators/depth_camera_scenes.h>
+#include <pcl/tda/generators/parameter_checks.h>
+#include <pcl/tda/generators/random_sampling.h>
+#include <pcl/exceptions.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <utility>
+
+namespace pcl {
+namespace tda {
+namespace {
+
+/** Object sizes, in metres. */
+constexpr double BOWL_MIN_RADIUS = 0.05, BOWL_MAX_RADIUS = 0.09, BOWL_WALL = 0.006;
+constexpr double CONE_MIN_RADIUS = 0.04, CONE_MAX_RADIUS = 0.07;
+constexpr double CONE_MIN_TOP_RATIO = 0.3, CONE_MAX_TOP_RATIO = 0.7;
+constexpr double CONE_MIN_HEIGHT = 0.08, CONE_MAX_HEIGHT = 0.20;
+constexpr double RING_MIN_RADIUS = 0.035, RING_MAX_RADIUS = 0.06;
+constexpr double RING_MIN_TUBE = 0.012, RING_MAX_TUBE = 0.025;
+constexpr double BLOCK_MIN_LENGTH = 0.08, BLOCK_MAX_LENGTH = 0.16;
+constexpr double BLOCK_MIN_WIDTH = 0.05, BLOCK_MAX_WIDTH = 0.10;
+constexpr double BLOCK_MIN_HEIGHT = 0.06, BLOCK_MAX_HEIGHT = 0.16;
+constexpr double CAPSULE_MIN_RADIUS = 0.025, CAPSULE_MAX_RADIUS = 0.045;
+constexpr double CAPSULE_MIN_LENGTH = 0.05, CAPSULE_MAX_LENGTH = 0.14;
+/** The tallest object (a cone), in metres: the camera must be above it. */
+constexpr double MAX_OBJECT_HEIGHT = CONE_MAX_HEIGHT;
+constexpr std::size_t NUM_KINDS = 5;
+
+/** Sphere tracing: a ray hits a surface when its distance bound falls below
+ * HIT_EPSILON (metres); rays that take more steps pass by (silhouettes). */
+constexpr double HIT_EPSILON = 1e-5;
+constexpr int MAX_TRACE_STEPS = 500;
+/** Step of the central differences that give surface normals, in metres. */
+constexpr double NORMAL_STEP = 1e-6;
+/** Shadow rays start this far off the surface, in metres. */
+constexpr double SHADOW_OFFSET = 1e-4;
+constexpr std::size_t MAX_IMAGE_SIDE = 4096;
+constexpr int MAX_PLACEMENT_ATTEMPTS = 300;
+constexpr int MAX_LAYOUT_ATTEMPTS = 100;
+constexpr int GAP_BISECTION_STEPS = 60;
+/** Shading of the colours: ambient part and part proportional to cos(incidence). */
+constexpr double AMBIENT = 0.35, DIFFUSE = 0.65;
+
+using Colour = std::array<std::uint8_t, 3>;
+const Colour TABLE_COLOUR = {165, 150, 125};
+const std::array<Colour, MAX_DEPTH_CAMERA_OBJECTS> OBJECT_PALETTE = {{{200, 60, 50},
+                                                                      {60, 150, 80},
+                                                                      {50, 90, 190},
+                                                                      {220, 180, 40},
+                                                                      {150, 70, 170},
+                                                                      {40, 170, 170},
+                                                                      {230, 120, 40},
+                                                                      {90, 90, 90}}};
+
+// Footprints (outlines seen from above): a convex core (one point, a segment, or a
+// rectangle counter-clockwise) grown by a radius, with exact distances.
+
+struct Footprint {
+  std::vector<Eigen::Vector2d> core;
+  double radius = 0.0;
+};
+
+double
+cross2 (const Eigen::Vector2d& a, const Eigen::Vector2d& b)
+{
+  return a.x() * b.y() - a.y() * b.x();
+}
+
+double
+pointSegmentDistance (const Eigen::Vector2d& p,
+                      const Eigen::Vector2d& a,
+                      const Eigen::Vector2d& b)
+{
+  const Eigen::Vector2d ab = b - a;
+  const double length2 = ab.squaredNorm();
+  const double t =
+      length2 > 0.0 ? std::clamp ((p - a).dot (ab) / length2, 0.0, 1.0) : 0.0;
+  return (a + t * ab - p).norm();
+}
+
+/** Whether the segments ab and cd cross at a point inside both. */
+bool
+segmentsCross (const Eigen::Vector2d& a,
+               const Eigen::Vector2d& b,
+               const Eigen::Vector2d& c,
+               const Eigen::Vector2d& d)
+{
+  const double d1 = cross2 (b - a, c - a), d2 = cross2 (b - a, d - a);
+  const double d3 = cross2 (d - c, a - c), d4 = cross2 (d - c, b - c);
+  return ((d1 > 0.0 && d2 < 0.0) || (d1 < 0.0 && d2 > 0.0)) &&
+         ((d3 > 0.0 && d4 < 0.0) || (d3 < 0.0 && d4 > 0.0));
+}
+
+/** Whether p lies in the convex counter-clockwise polygon (false for a point or a
+ * segment). */
+bool
+insidePolygon (const Eigen::Vector2d& p, const std::vector<Eigen::Vector2d>& polygon)
+{
+  if (polygon.size() < 3)
+    return false;
+  for (std::size_t i = 0; i < polygon.size(); ++i) {
+    const Eigen::Vector2d& a = polygon[i];
+    const Eigen::Vector2d& b = polygon[(i + 1) % polygon.size()];
+    if (cross2 (b - a, p - a) < 0.0)
+      return false;
+  }
+  return true;
+}
+
+/** The sides of a core: a polygon's sides, a segment, or a point as a zero-length
+ * side. */
+std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>>
+sides (const std::vector<Eigen::Vector2d>& core)
+{
+  if (core.size() <= 2)
+    return {{core.front(), core.back()}};
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> result;
+  for (std::size_t i = 0; i < core.size(); ++i)
+    result.emplace_back (core[i], core[(i + 1) % core.size()]);
+  return result;
+}
+
+/** Distance between two convex cores (0 when they meet). */
+double
+coreDistance (const std::vector<Eigen::Vector2d>& p,
+              const std::vector<Eigen::Vector2d>& q)
+{
+  for (const Eigen::Vector2d& v : p)
+    if (insidePolygon (v, q))
+      return 0.0;
+  for (const Eigen::Vector2d& v : q)
+    if (insidePolygon (v, p))
+      return 0.0;
+  double distance = std::numeric_limits<double>::infinity();
+  for (const auto& [a, b] : sides (p))
+    for (const auto& [c, d] : sides (q)) {
+      if (segmentsCross (a, b, c, d))
+        return 0.0;
+      distance = std::min ({distance,
+                            pointSegmentDistance (a, c, d),
+                            pointSegmentDistance (b, c, d),
+                            pointSegmentDistance (c, a, b),
+                            pointSegmentDistance (d, a, b)});
+    }
+  return distance;
+}
+
+/** Distance between two footprints; <= 0 when they overlap. */
+double
+footprintGap (const Footprint& a, const Footprint& b)
+{
+  return coreDistance (a.core, b.core) - a.radius - b.radius;
+}
+
+/** Exact distance to a box of half sides \a half centred at the origin (negative
+ * inside). */
+double
+boxDistance (const Eigen::Vector3d& p, const Eigen::Vector3d& half)
+{
+  const Eigen::Vector3d q = p.cwiseAbs() - half;
+  return q.cwiseMax (0.0).norm() + std::min (q.maxCoeff(), 0.0);
+}
+
+/** Exact distance to a solid truncated cone standing on z = 0: bottom radius r1,
+ * top radius r2, height h (negative inside). */
+double
+coneDistance (const Eigen::Vector3d& p, double r1, double r2, double h)
+{
+  const double half = 0.5 * h;
+  const Eigen::Vector2d q (p.head<2>().norm(), p.z() - half);
+  const Eigen::Vector2d k1 (r2, half);
+  const Eigen::Vector2d k2 (r2 - r1, h);
+  const Eigen::Vector2d ca (q.x() - std::min (q.x(), q.y() < 0.0 ? r1 : r2),
+                            std::abs (q.y()) - half);
+  const Eigen::Vector2d cb =
+      q - k1 + k2 * std::clamp ((k1 - q).dot (k2) / k2.squaredNorm(), 0.0, 1.0);
+  const double sign = cb.x() < 0.0 && ca.y() < 0.0 ? -1.0 : 1.0;
+  return sign * std::sqrt (std::min (ca.squaredNorm(), cb.squaredNorm()));
+}
+
+/** An object on the table: its geometry as a distance bound for sphere tracing and
+ * as a footprint for the layout. */
+struct Solid {
+  DepthObjectKind kind = DepthObjectKind::BOWL;
+  /** Centre of the footprint, z = 0. */
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+  double yaw = 0.0;
+  /** Bounding box in the object's frame, as DepthCameraObject::dimensions. */
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  double top_radius = 0.0;
+
+  /** The point p (world frame) in the object's frame. */
+  Eigen::Vector3d
+  toLocal (const Eigen::Vector3d& p) const
+  {
+    const double c = std::cos (yaw), s = std::sin (yaw);
+    const Eigen::Vector3d d = p - position;
+    return {c * d.x() + s * d.y(), -s * d.x() + c * d.y(), d.z()};
+  }
+
+  /** A lower bound on the distance from p (world frame) to the object, exact
+   * outside but for the bowl's rim, negative inside. */
+  double
+  distance (const Eigen::Vector3d& world) const
+  {
+    const Eigen::Vector3d p = toLocal (world);
+    switch (kind) {
+    case DepthObjectKind::BOWL: {
+      const double radius = size.z();
+      const Eigen::Vector3d q = p - Eigen::Vector3d (0.0, 0.0, radius);
+      const double shell =
+          std::abs (q.norm() - (radius - 0.5 * BOWL_WALL)) - 0.5 * BOWL_WALL;
+      return std::max (shell, q.z());
+    }
+    case DepthObjectKind::CONE:
+      return coneDistance (p, 0.5 * size.x(), top_radius, size.z());
+    case DepthObjectKind::RING: {
+      const double tube = 0.5 * size.z();
+      const double radius = 0.5 * size.x() - tube;
+      return Eigen::Vector2d (p.head<2>().norm() - radius, p.z() - tube).norm() - tube;
+    }
+    case DepthObjectKind::L_BLOCK: {
+      const double length = size.x(), width = size.y(), height = size.z();
+      const Eigen::Vector3d base_half (0.5 * length, 0.5 * width, height / 6.0);
+      const Eigen::Vector3d upright_half (length / 6.0, 0.5 * width, 0.5 * height);
+      return std::min (
+          boxDistance (p - Eigen::Vector3d (0.0, 0.0, height / 6.0), base_half),
+          boxDistance (p - Eigen::Vector3d (length / 3.0, 0.0, 0.5 * height),
+                       upright_half));
+    }
+    case DepthObjectKind::CAPSULE: {
+      const double radius = 0.5 * size.z();
+      const double half_length = 0.5 * size.x() - radius;
+      const Eigen::Vector3d axis_point (
+          std::clamp (p.x(), -half_length, half_length), 0.0, radius);
+      return (p - axis_point).norm() - radius;
+    }
+    }
+    return 0.0;
+  }
+
+  /** Outward unit normal at a surface point p (world frame). */
+  Eigen::Vector3d
+  normal (const Eigen::Vector3d& p) const
+  {
+    Eigen::Vector3d gradient;
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d step = NORMAL_STEP * Eigen::Vector3d::Unit (k);
+      gradient[k] = distance (p + step) - distance (p - step);
+    }
+    return gradient.normalized();
+  }
+
+  /** Centre and radius of a sphere holding the object. */
+  Eigen::Vector3d
+  boundCentre () const
+  {
+    return position + Eigen::Vector3d (0.0, 0.0, 0.5 * size.z());
+  }
+
+  double
+  boundRadius () const
+  {
+    return 0.5 * size.norm();
+  }
+
+  Footprint
+  footprint () const
+  {
+    const double c = std::cos (yaw), s = std::sin (yaw);
+    const auto place = [&] (double x, double y) {
+      return Eigen::Vector2d (position.x() + c * x - s * y,
+                              position.y() + s * x + c * y);
+    };
+    Footprint result;
+    switch (kind) {
+    case DepthObjectKind::BOWL:
+    case DepthObjectKind::CONE:
+    case DepthObjectKind::RING:
+      result.core = {place (0.0, 0.0)};
+      result.radius = 0.5 * size.x();
+      break;
+    case DepthObjectKind::L_BLOCK: {
+      const double x = 0.5 * size.x(), y = 0.5 * size.y();
+      result.core = {place (-x, -y), place (x, -y), place (x, y), place (-x, y)};
+      break;
+    }
+    case DepthObjectKind::CAPSULE:
+      result.radius = 0.5 * size.z();
+      result.core = {place (-0.5 * size.x() + result.radius, 0.0),
+                     place (0.5 * size.x() - result.radius, 0.0)};
+      break;
+    }
+    return result;
+  }
+};
+
+/** Draws the kind, size and yaw of an object (position left at the origin). */
+Solid
+drawSolid (PortableRandom& random)
+{
+  Solid solid;
+  solid.kind = static_cast<DepthObjectKind> (random.index (NUM_KINDS));
+  switch (solid.kind) {
+  case DepthObjectKind::BOWL: {
+    const double radius = random.uniform (BOWL_MIN_RADIUS, BOWL_MAX_RADIUS);
+    solid.size = Eigen::Vector3d (2.0 * radius, 2.0 * radius, radius);
+    break;
+  }
+  case DepthObjectKind::CONE: {
+    const double radius = random.uniform (CONE_MIN_RADIUS, CONE_MAX_RADIUS);
+    solid.top_radius = radius * random.uniform (CONE_MIN_TOP_RATIO, CONE_MAX_TOP_RATIO);
+    solid.size = Eigen::Vector3d (
+        2.0 * radius, 2.0 * radius, random.uniform (CONE_MIN_HEIGHT, CONE_MAX_HEIGHT));
+    break;
+  }
+  case DepthObjectKind::RING: {
+    const double radius = random.uniform (RING_MIN_RADIUS, RING_MAX_RADIUS);
+    const double tube = random.uniform (RING_MIN_TUBE, RING_MAX_TUBE);
+    solid.size =
+        Eigen::Vector3d (2.0 * (radius + tube), 2.0 * (radius + tube), 2.0 * tube);
+    break;
+  }
+  case DepthObjectKind::L_BLOCK:
+    solid.size = Eigen::Vector3d (random.uniform (BLOCK_MIN_LENGTH, BLOCK_MAX_LENGTH),
+                                  random.uniform (BLOCK_MIN_WIDTH, BLOCK_MAX_WIDTH),
+                                  random.uniform (BLOCK_MIN_HEIGHT, BLOCK_MAX_HEIGHT));
+    break;
+  case DepthObjectKind::CAPSULE: {
+    const double radius = random.uniform (CAPSULE_MIN_RADIUS, CAPSULE_MAX_RADIUS);
+    const double length = random.uniform (CAPSULE_MIN_LENGTH, CAPSULE_MAX_LENGTH);
+    solid.size = Eigen::Vector3d (length + 2.0 * radius, 2.0 * radius, 2.0 * radius);
+    break;
+  }
+  }
+  solid.yaw = random.uniform (0.0, 2.0 * M_PI);
+  return solid;
+}
+
+/** Largest distance from the centre of a footprint to its outline. */
+double
+reach (const Footprint& footprint, const Eigen::Vector3d& position)
+{
+  double core = 0.0;
+  for (const Eigen::Vector2d& v : footprint.core)
+    core = std::max (core, (v - position.head<2>()).norm());
+  return core + footprint.radius;
+}
+
+/** Whether the footprint lies inside the disc of radius \a radius about the
+ * origin. */
+bool
+insideDisc (const Footprint& footprint, double radius)
+{
+  return std::all_of (
+      footprint.core.begin(), footprint.core.end(), [&] (const Eigen::Vector2d& v) {
+        return v.norm() + footprint.radius <= radius;
+      });
+}
+
+/** Moves \a solid along the unit direction \a u from \a anchor's position to where
+ * the gap between their footprints is \a gap (within 1e-12 m, not less). */
+void
+placeAtGap (const Solid& anchor, const Eigen::Vector3d& u, double gap, Solid& solid)
+{
+  const Footprint fixed = anchor.footprint();
+  solid.position = anchor.position;
+  double low = 0.0;
+  double high =
+      reach (fixed, anchor.position) + reach (solid.footprint(), solid.position) + gap;
+  for (int step = 0; step < GAP_BISECTION_STEPS; ++step) {
+    const double middle = 0.5 * (low + high);
+    solid.position = anchor.position + middle * u;
+    if (footprintGap (fixed, solid.footprint()) < gap)
+      low = middle;
+    else
+      high = middle;
+  }
+  solid.position = anchor.position + high * u;
+}
+
+/** Lays out the objects in the layout disc, as documented; false when the random
+ * draws do not fit. */
+bool
+layOut (std::size_t count,
+        const DepthCameraParameters& parameters,
+        PortableRandom& random,
+        std::vector<Solid>& solids)
+{
+  solids.clear();
+  for (std::size_t k = 0; k < count; ++k) {
+    bool placed = false;
+    for (int attempt = 0; attempt < MAX_PLACEMENT_ATTEMPTS && !placed; ++attempt) {
+      Solid solid = drawSolid (random);
+      const bool close = k > 0 && random.uniform() < parameters.close_probability;
+      if (close) {
+        const Solid& anchor = solids[random.index (k)];
+        const double gap =
+            random.uniform (parameters.min_close_gap, parameters.max_close_gap);
+        const double angle = random.uniform (0.0, 2.0 * M_PI);
+        placeAtGap (anchor,
+                    Eigen::Vector3d (std::cos (angle), std::sin (angle), 0.0),
+                    gap,
+                    solid);
+      }
+      else {
+        const double radius = parameters.layout_radius * std::sqrt (random.uniform());
+        const double angle = random.uniform (0.0, 2.0 * M_PI);
+        solid.position =
+            Eigen::Vector3d (radius * std::cos (angle), radius * std::sin (angle), 0.0);
+      }
+      const Footprint footprint = solid.footprint();
+      const double min_gap = close ? parameters.min_close_gap : parameters.min_far_gap;
+      placed = insideDisc (footprint, parameters.layout_radius) &&
+               std::all_of (solids.begin(), solids.end(), [&] (const Solid& other) {
+                 return footprintGap (footprint, other.footprint()) >= min_gap;
+               });
+      if (placed)
+        solids.push_back (solid);
+    }
+    if (!placed)
+      return false;
+  }
+  return true;
+}
+
+/** First hit of the ray origin + t * direction (unit direction), 0 <= t < t_hit, on
+ * the objects, by sphere tracing inside each one's bounding sphere: the index of the
+ * object hit (t_hit set to the hit) or -1 (t_hit unchanged). */
+int
+traceObjects (const std::vector<Solid>& solids,
+              const Eigen::Vector3d& origin,
+              const Eigen::Vector3d& direction,
+              double& t_hit)
+{
+  int hit = -1;
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    const Solid& solid = solids[k];
+    const Eigen::Vector3d offset = origin - solid.boundCentre();
+    const double b = offset.dot (direction);
+    const double discriminant =
+        b * b - offset.squaredNorm() + solid.boundRadius() * solid.boundRadius();
+    if (discriminant <= 0.0)
+      continue;
+    const double root = std::sqrt (discriminant);
+    const double end = std::min (-b + root, t_hit);
+    double t = std::max (-b - root, 0.0);
+    for (int step = 0; step < MAX_TRACE_STEPS && t < end; ++step) {
+      const double d = solid.distance (origin + t * direction);
+      if (d < HIT_EPSILON) {
+        t_hit = t;
+        hit = static_cast<int> (k);
+        break;
+      }
+      t += d;
+    }
+  }
+  return hit;
+}
+
+/** Throws pcl::BadArgumentException "generateDepthCameraScene: <message>" unless
+ * \a valid. */
+template <typename... Parts>
+void
+require (bool valid, const Parts&... message)
+{
+  if (valid)
+    return;
+  std::ostringstream text;
+  (text << ... << message);
+  PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                       "generateDepthCameraScene: " << text.str());
+}
+
+void
+checkDepthCameraParameters (const DepthCameraParameters& p)
+{
+  const char* name = "generateDepthCameraScene";
+  require (p.min_objects >= 1 && p.min_objects <= p.max_objects &&
+               p.max_objects <= MAX_DEPTH_CAMERA_OBJECTS,
+           "the object counts must satisfy 1 <= min <= max <= ",
+           MAX_DEPTH_CAMERA_OBJECTS,
+           ", not min ",
+           p.min_objects,
+           " and max ",
+           p.max_objects);
+  require (p.width >= 1 && p.width <= MAX_IMAGE_SIDE && p.height >= 1 &&
+               p.height <= MAX_IMAGE_SIDE,
+           "the image sides must be 1 to ",
+           MAX_IMAGE_SIDE,
+           " pixels, not ",
+           p.width,
+           " x ",
+           p.height);
+  checkLength (p.fx, name, "fx");
+  checkLength (p.fy, name, "fy");
+  require (std::isfinite (p.cx) && std::isfinite (p.cy),
+           "the principal point must be finite, not (",
+           p.cx,
+           ", ",
+           p.cy,
+           ")");
+  checkLength (p.min_distance, name, "minimum distance");
+  require (std::isfinite (p.max_distance) && p.max_distance >= p.min_distance,
+           "the maximum distance must be finite and at least the minimum, not ",
+           p.max_distance);
+  require (p.min_elevation_deg > 0.0f && p.min_elevation_deg <= p.max_elevation_deg &&
+               p.max_elevation_deg < 90.0f,
+           "the elevations must satisfy 0 < min <= max < 90 degrees, not min ",
+           p.min_elevation_deg,
+           " and max ",
+           p.max_elevation_deg);
+  const double lowest = p.min_distance * std::sin (p.min_elevation_deg * M_PI / 180.0);
+  require (lowest > MAX_OBJECT_HEIGHT,
+           "the camera must be above the objects (min distance x sin(min elevation) > ",
+           MAX_OBJECT_HEIGHT,
+           " m), not at ",
+           lowest,
+           " m");
+  checkLength (p.table_width, name, "table width");
+  checkLength (p.table_depth, name, "table depth");
+  checkLength (p.layout_radius, name, "layout radius");
+  require (2.0f * p.layout_radius <= std::min (p.table_width, p.table_depth),
+           "the layout radius must be at most half the table's smaller side, not ",
+           p.layout_radius);
+  require (p.close_probability >= 0.0f && p.close_probability <= 1.0f,
+           "the close probability must be in [0, 1], not ",
+           p.close_probability);
+  checkLength (p.min_close_gap, name, "minimum close gap");
+  require (std::isfinite (p.max_close_gap) && p.max_close_gap >= p.min_close_gap,
+           "the maximum close gap must be finite and at least the minimum, not ",
+           p.max_close_gap);
+  checkLength (p.min_far_gap, name, "minimum far gap");
+  checkNonNegative (p.noise_coefficient, name, "noise coefficient");
+  checkLength (p.baseline, name, "baseline");
+  checkNonNegative (p.disparity_step, name, "disparity step");
+  require (p.grazing_start_deg >= 0.0f && p.grazing_start_deg <= p.grazing_full_deg &&
+               p.grazing_full_deg <= 90.0f,
+           "the grazing angles must satisfy 0 <= start <= full <= 90 degrees, not "
+           "start ",
+           p.grazing_start_deg,
+           " and full ",
+           p.grazing_full_deg);
+}
+
+std::uint8_t
+shade (std::uint8_t value, double cos_incidence)
+{
+  return static_cast<std::uint8_t> (
+      std::lround (value * (AMBIENT + DIFFUSE * cos_incidence)));
+}
+
+} // namespace
+
+DepthCameraScene
+generateDepthCameraScene (const DepthCameraParameters& parameters)
+{
+  checkDepthCameraParameters (parameters);
+  PortableRandom random (parameters.seed);
+  DepthCameraScene scene;
+
+  // Camera: looks at the table centre, no roll; optical frame x right, y down.
+  const double azimuth = random.uniform (0.0, 2.0 * M_PI);
+  const double elevation =
+      random.uniform (parameters.min_elevation_deg, parameters.max_elevation_deg) *
+      M_PI / 180.0;
+  const double distance =
+      random.uniform (parameters.min_distance, parameters.max_distance);
+  const Eigen::Vector3d camera =
+      distance * Eigen::Vector3d (std::cos (elevation) * std::cos (azimuth),
+                                  std::cos (elevation) * std::sin (azimuth),
+                                  std::sin (elevation));
+  const Eigen::Vector3d forward = -camera.normalized();
+  const Eigen::Vector3d right = forward.cross (Eigen::Vector3d::UnitZ()).normalized();
+  Eigen::Matrix3d rotation;
+  rotation << right, forward.cross (right), forward;
+  const Eigen::Vector3d projector = camera + parameters.baseline * right;
+  scene.camera_pose.linear() = rotation.cast<float>();
+  scene.camera_pose.translation() = camera.cast<float>();
+  scene.distance = static_cast<float> (distance);
+  scene.elevation_deg = static_cast<float> (elevation * 180.0 / M_PI);
+  const Eigen::Vector3d plane_normal = rotation.transpose() * Eigen::Vector3d::UnitZ();
+  scene.table_plane << plane_normal.cast<float>(), static_cast<float> (camera.z());
+
+  std::array<Colour, MAX_DEPTH_CAMERA_OBJECTS> palette = OBJECT_PALETTE;
+  for (std::size_t i = palette.size() - 1; i > 0; --i)
+    std::swap (palette[i], palette[random.index (i + 1)]);
+
+  const std::size_t count =
+      parameters.min_objects +
+      random.index (parameters.max_objects - parameters.min_objects + 1);
+  std::vector<Solid> solids;
+  bool laid_out = false;
+  for (int layout = 0; layout < MAX_LAYOUT_ATTEMPTS && !laid_out; ++layout)
+    laid_out = layOut (count, parameters, random, solids);
+  if (!laid_out)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "generateDepthCameraScene: cannot lay out "
+                             << count << " objects in a disc of radius "
+                             << parameters.layout_radius << " m with gaps of at least "
+                             << parameters.min_close_gap << " m (close) and "
+                             << parameters.min_far_gap
+                             << " m (far); use fewer objects, a larger layout "
+                                "radius or smaller gaps");
+
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    DepthCameraObject truth;
+    truth.kind = solids[k].kind;
+    truth.label = DEPTH_FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (k);
+    truth.position = solids[k].position.cast<float>();
+    truth.yaw = static_cast<float> (solids[k].yaw);
+    truth.dimensions = solids[k].size.cast<float>();
+    truth.top_radius = static_cast<float> (solids[k].top_radius);
+    double gap = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < solids.size(); ++j)
+      if (j != k)
+        gap =
+            std::min (gap, footprintGap (solids[k].footprint(), solids[j].footprint()));
+    truth.gap = static_cast<float> (gap);
+    truth.r = palette[k][0];
+    truth.g = palette[k][1];
+    truth.b = palette[k][2];
+    scene.objects.push_back (truth);
+  }
+
+  // One ray per pixel.
+  pcl::PointXYZRGBL lost;
+  lost.x = lost.y = lost.z = std::numeric_limits<float>::quiet_NaN();
+  lost.rgba = 0;
+  lost.label = DEPTH_BACKGROUND_LABEL;
+  scene.cloud.reset (new pcl::PointCloud<pcl::PointXYZRGBL> (
+      static_cast<std::uint32_t> (parameters.width),
+      static_cast<std::uint32_t> (parameters.height),
+      lost));
+  scene.cloud->is_dense = false;
+  const double half_width = 0.5 * parameters.table_width;
+  const double half_depth = 0.5 * parameters.table_depth;
+  const double focal_baseline =
+      static_cast<double> (parameters.fx) * parameters.baseline;
+  for (std::size_t v = 0; v < parameters.height; ++v)
+    for (std::size_t u = 0; u < parameters.width; ++u) {
+      const Eigen::Vector3d pixel_ray (
+          (static_cast<double> (u) - parameters.cx) / parameters.fx,
+          (static_cast<double> (v) - parameters.cy) / parameters.fy,
+          1.0);
+      const Eigen::Vector3d direction = (rotation * pixel_ray).normalized();
+      double t = std::numeric_limits<double>::infinity();
+      if (direction.z() < 0.0) {
+        const double t_table = -camera.z() / direction.z();
+        const Eigen::Vector3d p = camera + t_table * direction;
+        if (std::abs (p.x()) <= half_width && std::abs (p.y()) <= half_depth)
+          t = t_table;
+      }
+      const int object = traceObjects (solids, camera, direction, t);
+      if (!std::isfinite (t))
+        continue;
+      const Eigen::Vector3d p = camera + t * direction;
+      const Eigen::Vector3d normal = object < 0
+                                         ? Eigen::Vector3d (Eigen::Vector3d::UnitZ())
+                                         : solids[object].normal (p);
+
+      if (parameters.projector_shadows) {
+        const Eigen::Vector3d start = p + SHADOW_OFFSET * normal;
+        const Eigen::Vector3d to_projector = projector - start;
+        double t_shadow = to_projector.norm();
+        if (traceObjects (solids, start, to_projector / t_shadow, t_shadow) >= 0)
+          continue;
+      }
+      const double cos_incidence = std::min (std::abs (normal.dot (direction)), 1.0);
+      const double incidence = std::acos (cos_incidence) * 180.0 / M_PI;
+      if (incidence >= parameters.grazing_full_deg ||
+          (incidence > parameters.grazing_start_deg &&
+           random.uniform() *
+                   (parameters.grazing_full_deg - parameters.grazing_start_deg) <
+               incidence - parameters.grazing_start_deg))
+        continue;
+
+      const double depth = (p - camera).dot (forward);
+      double measured =
+          depth + random.truncatedNormal (parameters.noise_coefficient * depth * depth,
+                                          NOISE_TRUNCATION);
+      if (!(measured > 0.0))
+        continue;
+      if (parameters.disparity_step > 0.0f) {
+        const double steps =
+            std::round (focal_baseline / measured / parameters.disparity_step);
+        measured = focal_baseline / (std::max (steps, 1.0) * parameters.disparity_step);
+      }
+
+      if (object < 0) {
+        ++scene.num_table_points;
+        if (parameters.remove_table)
+          continue;
+      }
+      pcl::PointXYZRGBL& point = (*scene.cloud) (u, v);
+      point.getVector3fMap() = (measured * pixel_ray).cast<float>();
+      const Colour& colour = object < 0 ? TABLE_COLOUR : palette[object];
+      point.r = shade (colour[0], cos_incidence);
+      point.g = shade (colour[1], cos_incidence);
+      point.b = shade (colour[2], cos_incidence);
+      point.a = 255;
+      if (object >= 0) {
+        point.label = DEPTH_FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (object);
+        ++scene.objects[object].num_points;
+      }
+    }
+  return scene;
+}
+
+} // namespace tda
+} // namespace pcl

@@ -1,0 +1,46 @@
+#pragma once
+
+#include <pcl/tda/common/atomic_file.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief The output files of a tool run: checked before the work, written to
+ * temporary files and committed together once everything succeeded, so that a
+ * failed run changes no output. Links and permission bits of existing outputs are
+ * kept (see FileReplacement). */
+class ToolOutputs {
+public:
+  /** \brief An output file and the option that names it ("-svg"; "output" for a
+   * positional argument), for messages. */
+  struct Output {
+    std::string option;
+    std::string path;
+  };
+
+  /** \brief Checks the outputs (those of empty path are skipped): each one in an
+   * existing, writable folder, not a directory or another kind of file, not the
+   * file \a input (also through a link; "" for none), no two the same file.
+   * \throws pcl::IOException naming the file */
+  ToolOutputs (const std::string& input, const std::vector<Output>& outputs);
+
+  /** \brief The temporary file to write the new content of the output \a path to.
+   * \throws pcl::BadArgumentException when \a path is no output */
+  const std::string&
+  temporary (const std::string& path) const;
+
+  /** \brief Replaces each output with its temporary file.
+   * \throws pcl::IOException naming the file that could not be replaced */
+  void
+  commit ();
+
+private:
+  std::vector<std::unique_ptr<FileReplacement>> files_;
+};
+
+} // namespace tda
+} // namespace pcl

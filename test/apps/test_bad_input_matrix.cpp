@@ -1,0 +1,345 @@
+// The bad-input matrix of the tools: every malformed input file, option and output
+// path, for every tool that takes it, must give a non-zero exit and a message that
+// names the problem on a line of its own, and must leave every file as it was (no
+// output created or changed, no temporary file left). Also -h, and outputs that are
+// links or have their own permission bits.
+
+#include <pcl/io/pcd_io.h>
+#include <pcl/tda/generators/shapes.h>
+
+#include <gtest/gtest.h>
+
+#include "apps/pcd_test_files.h"
+#include "tool_runner.h"
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+using pcl::tda::test::run;
+using pcl::tda::test::RunResult;
+using pcl::tda::test::writeFile;
+
+namespace {
+
+/** What a folder holds: per entry, its kind, permission bits and content (or link
+ * target). */
+using FolderState = std::map<std::string, std::string>;
+
+FolderState
+stateOf (const std::string& folder)
+{
+  FolderState state;
+  for (const auto& entry : std::filesystem::directory_iterator (folder)) {
+    const std::string path = entry.path().string();
+    struct stat status;
+    ::lstat (path.c_str(), &status);
+    std::ostringstream description;
+    description << std::oct << status.st_mode << " ";
+    if (entry.is_symlink())
+      description << "-> " << std::filesystem::read_symlink (entry.path()).string();
+    else if (entry.is_regular_file())
+      description << std::ifstream (path, std::ios::binary).rdbuf();
+    state[entry.path().filename().string()] = description.str();
+  }
+  return state;
+}
+
+std::string
+tool (const std::string& name)
+{
+  return std::string (PCL_TDA_BIN_DIR) + "/pcl_tda_" + name;
+}
+
+/** A folder with a small valid cloud, existing outputs, a folder named like a PCD
+ * file and a FIFO, removed at the end. */
+class BadInputMatrix : public ::testing::Test {
+protected:
+  void
+  SetUp () override
+  {
+    folder_ = testing::TempDir() + "bad_input_matrix_" +
+              testing::UnitTest::GetInstance()->current_test_info()->name();
+    std::filesystem::remove_all (folder_);
+    std::filesystem::create_directories (folder_ + "/x.pcd");
+    pcl::tda::CircleParameters circle;
+    circle.num_points = 200;
+    pcl::io::savePCDFileBinary (path ("good.pcd"),
+                                *pcl::tda::generateCircle (circle).cloud);
+    for (const char* output : {"out.csv", "out.pcd", "old.svg"})
+      writeFile (path (output), "old content\n");
+    ASSERT_EQ (::mkfifo (path ("fifo.pcd").c_str(), 0600), 0);
+  }
+
+  void
+  TearDown () override
+  {
+    std::filesystem::remove_all (folder_);
+  }
+
+  std::string
+  path (const std::string& name) const
+  {
+    return folder_ + "/" + name;
+  }
+
+  /** Runs \a tool_name with \a arguments, expecting a refusal that says \a message
+   * and changes nothing in the folder. */
+  void
+  expectRefusal (const std::string& tool_name,
+                 const std::string& arguments,
+                 const std::string& message) const
+  {
+    const FolderState before = stateOf (folder_);
+    const RunResult result =
+        run ("cd " + folder_ + " && timeout 60 " + tool (tool_name) + " " + arguments);
+    const std::string context =
+        "pcl_tda_" + tool_name + " " + arguments + "\n" + result.output;
+    EXPECT_NE (result.exit_code, 0) << context;
+    const auto at = result.output.find (message);
+    EXPECT_NE (at, std::string::npos) << "expected: " << message << "\n" << context;
+    // The error comes after the step lines ("> Loading x.pcd "), on a line of its
+    // own.
+    const auto last_step = result.output.rfind ("\n> ");
+    const auto line_start = result.output.rfind ('\n', at);
+    if (at != std::string::npos && last_step != std::string::npos) {
+      EXPECT_GT (at, last_step) << context;
+      EXPECT_NE (result.output.compare (line_start + 1, 2, "> "), 0) << context;
+    }
+    EXPECT_EQ (stateOf (folder_), before) << context;
+  }
+
+  std::string folder_;
+};
+
+} // namespace
+
+TEST_F (BadInputMatrix, MalformedInputFiles)
+{
+  for (const auto& [content, message] : pcl::tda::test::malformedPCDFiles()) {
+    writeFile (path ("bad.pcd"), content);
+    expectRefusal ("barcode", "bad.pcd out.csv -radius 0.1", message);
+    expectRefusal ("segment", "bad.pcd out.pcd -radius 0.1 -plane 0", message);
+  }
+  const std::vector<std::pair<std::string, std::string>> inputs{
+      {"x.pcd", "x.pcd is a directory, not a PCD file"},
+      {"fifo.pcd", "fifo.pcd is not a regular file"},
+      {"missing.pcd", "cannot open missing.pcd: No such file or directory"},
+  };
+  for (const auto& [input, message] : inputs) {
+    expectRefusal ("barcode", input + " out.csv -radius 0.1", message);
+    expectRefusal ("segment", input + " out.pcd -radius 0.1", message);
+  }
+}
+
+TEST_F (BadInputMatrix, BadOptions)
+{
+  const std::string barcode = "good.pcd out.csv -radius 0.3 ";
+  const std::vector<std::pair<std::string, std::string>> barcode_cases{
+      {"good.pcd out.csv", "Option -radius is required."},
+      {"good.pcd out.csv -radius abc", "Option -radius needs a number > 0, not 'abc'."},
+      {"good.pcd out.csv -radius 0", "Option -radius needs a number > 0, not '0'."},
+      {"good.pcd out.csv -radius -0.5",
+       "Option -radius needs a number > 0, not '-0.5'."},
+      {"good.pcd out.csv -radius nan", "Option -radius needs a number > 0, not 'nan'."},
+      {barcode + "-dim abc", "Option -dim needs an integer from 0 to 1, not 'abc'."},
+      {barcode + "-dim 2", "Option -dim needs an integer from 0 to 1, not '2'."},
+      {barcode + "-leaf abc",
+       "Option -leaf needs a number >= 0 and <= 3.40282e+38, not 'abc'."},
+      {barcode + "-leaf -1",
+       "Option -leaf needs a number >= 0 and <= 3.40282e+38, not '-1'."},
+      {barcode + "-memory abc",
+       "Option -memory needs a number >= 0 and <= 1e+12, not 'abc'."},
+      {barcode + "-memory 1MB",
+       "Option -memory needs a number >= 0 and <= 1e+12, not '1MB'."},
+      {barcode + "-memory 1e20",
+       "Option -memory needs a number >= 0 and <= 1e+12, not '1e20'."},
+      {barcode + "-leaf 1e300",
+       "Option -leaf needs a number >= 0 and <= 3.40282e+38, not '1e300'."},
+      {barcode + "-engine ripser", "Unknown engine ripser"},
+      {barcode + "-svg", "Option -svg needs a value."},
+      {barcode + "-diagram", "Option -diagram needs a value."},
+      {barcode + "-foo", "Unknown option -foo"},
+      {"good.pcd out.csv --radius 0.3", "Unknown option --radius"},
+      {barcode + "-radius 0.2", "Option -radius is given twice."},
+      {barcode + "extra.csv",
+       "Need the input .pcd file and the output .csv file, not 3 arguments."},
+      {"good.pcd -radius 0.3",
+       "Need the input .pcd file and the output .csv file, not 1 argument."},
+      {"good.txt out.csv -radius 0.3", "The input good.txt must be a .pcd file."},
+      {"good.pcd out.txt -radius 0.3", "The output out.txt must be a .csv file."},
+      {barcode + "-leaf 1e-9", "-leaf 1e-09 is too small for the points' extent"},
+      {barcode + "-leaf 1e-50", "-leaf 1e-50 is too small for the points' extent"},
+  };
+  for (const auto& [arguments, message] : barcode_cases)
+    expectRefusal ("barcode", arguments, message);
+
+  const std::string segment = "good.pcd out.pcd -radius 0.3 -plane 0 ";
+  const std::vector<std::pair<std::string, std::string>> segment_cases{
+      {"good.pcd out.pcd", "Option -radius is required."},
+      {"good.pcd out.pcd -radius abc", "Option -radius needs a number > 0, not 'abc'."},
+      {segment + "-min abc",
+       "Option -min needs an integer from 1 to 2147483647, not "
+       "'abc'."},
+      {segment + "-min 0", "Option -min needs an integer from 1 to 2147483647"},
+      {segment + "-max 5000000000",
+       "Option -max needs an integer from 1 to 2147483647"},
+      {segment + "-min 10 -max 5", "Need 1 <= -min <= -max, not 10 and 5."},
+      {"good.pcd out.pcd -radius 0.3 -plane yes",
+       "Option -plane needs an integer from 0 to 1, not 'yes'."},
+      {"good.pcd out.pcd -radius 0.3 -plane 2",
+       "Option -plane needs an integer from 0 to 1, not '2'."},
+      {segment + "-plane_dist 0", "Option -plane_dist needs a number > 0, not '0'."},
+      {segment + "-range -1", "Option -range needs a number >= 0, not '-1'."},
+      {segment + "-leaf abc",
+       "Option -leaf needs a number >= 0 and <= 3.40282e+38, not 'abc'."},
+      {segment + "-leaf 1e-9", "-leaf 1e-09 is too small for the points' extent"},
+      {segment + "-auto 1",
+       "Need the input .pcd file and the output .pcd file, not 3 arguments."},
+      {segment + "-svg", "Option -svg needs a value."},
+      {segment + "-foo", "Unknown option -foo"},
+      {"good.pcd out.csv -radius 0.3", "The output out.csv must be a .pcd file."},
+  };
+  for (const auto& [arguments, message] : segment_cases)
+    expectRefusal ("segment", arguments, message);
+
+  const std::vector<std::pair<std::string, std::string>> generate_cases{
+      {"cube out.pcd", "Unknown kind 'cube'"},
+      {"circle out.csv", "The output out.csv must be a .pcd file."},
+      {"circle out.pcd -n 2000000000",
+       "Option -n needs an integer from 1 to 10000000, not '2000000000'."},
+      {"circle out.pcd -n abc", "Option -n needs an integer from 1 to 10000000"},
+      {"circle out.pcd -n 0", "Option -n needs an integer from 1 to 10000000"},
+      {"circle out.pcd -n", "Option -n needs a value."},
+      {"circle out.pcd -noise abc",
+       "Option -noise needs a number >= 0 and <= 3.40282e+38, not 'abc'."},
+      {"circle out.pcd -seed -1", "Option -seed needs an integer >= 0, not '-1'."},
+      {"tabletop out.pcd -objects 99", "Option -objects needs an integer from 0 to 8"},
+      {"circle out.pcd -objects 2", "Option -objects applies to tabletop only."},
+      {"circle out.pcd -radius 2", "Unknown option -radius"},
+      {"circle out.pcd extra.pcd",
+       "Need the kind and the output .pcd file, not 3 arguments."},
+  };
+  for (const auto& [arguments, message] : generate_cases)
+    expectRefusal ("generate", arguments, message);
+}
+
+TEST_F (BadInputMatrix, BadOutputs)
+{
+  const std::string circle_link = path ("circle_link.csv");
+  std::filesystem::create_symlink ("good.pcd", circle_link);
+  const std::vector<std::pair<std::string, std::string>> barcode_cases{
+      {"good.pcd out.csv -radius 0.3 -svg nodir/b.svg",
+       "cannot write nodir/b.svg: the folder nodir does not exist"},
+      {"good.pcd out.csv -radius 0.3 -svg x.pcd",
+       "cannot write x.pcd: it is a directory"},
+      {"good.pcd out.csv -radius 0.3 -svg old.svg -diagram old.svg",
+       "-svg and -diagram name the same file old.svg"},
+      {"good.pcd out.csv -radius 0.3 -export-phat ./out.csv",
+       "output and -export-phat name the same file ./out.csv"},
+      {"good.pcd out.csv -radius 0.3 -diagram good.pcd",
+       "refusing to overwrite the input file good.pcd (-diagram)"},
+      {"good.pcd circle_link.csv -radius 0.3",
+       "refusing to overwrite the input file good.pcd (output)"},
+  };
+  for (const auto& [arguments, message] : barcode_cases)
+    expectRefusal ("barcode", arguments, message);
+  const std::vector<std::pair<std::string, std::string>> segment_cases{
+      {"good.pcd nodir/out.pcd -radius 0.3 -plane 0",
+       "cannot write nodir/out.pcd: the folder nodir does not exist"},
+      {"good.pcd out.pcd -radius 0.3 -plane 0 -svg nodir/b.svg",
+       "cannot write nodir/b.svg: the folder nodir does not exist"},
+      {"good.pcd x.pcd -radius 0.3 -plane 0", "cannot write x.pcd: it is a directory"},
+      {"good.pcd good.pcd -radius 0.3 -plane 0",
+       "refusing to overwrite the input file good.pcd (output)"},
+  };
+  for (const auto& [arguments, message] : segment_cases)
+    expectRefusal ("segment", arguments, message);
+  expectRefusal ("generate", "circle x.pcd", "cannot write x.pcd: it is a directory");
+  expectRefusal ("generate",
+                 "circle nodir/c.pcd",
+                 "cannot write nodir/c.pcd: the folder nodir does not exist");
+}
+
+TEST_F (BadInputMatrix, HelpPrintsOnlyTheHelp)
+{
+  for (const std::string& command :
+       {std::string ("barcode -h"),
+        std::string ("barcode good.pcd out.csv -radius 0.3 --help"),
+        std::string ("segment -h"),
+        std::string ("segment good.pcd out.pcd -foo -h"),
+        std::string ("generate --help"),
+        std::string ("generate circle out.pcd -h")}) {
+    const FolderState before = stateOf (folder_);
+    const RunResult result = run ("cd " + folder_ + " && " + tool (command));
+    EXPECT_EQ (result.exit_code, 0) << command << "\n" << result.output;
+    EXPECT_EQ (result.output.rfind ("Syntax is: ", 0), 0u) << command;
+    EXPECT_EQ (result.output.find ("\n> "), std::string::npos) << command;
+    EXPECT_EQ (stateOf (folder_), before) << command;
+  }
+}
+
+TEST_F (BadInputMatrix, OutputsKeepLinksAndPermissions)
+{
+  std::filesystem::create_symlink ("old.svg", path ("link.svg"));
+  ::chmod (path ("out.csv").c_str(), 0640);
+  const RunResult result = run ("cd " + folder_ + " && " + tool ("barcode") +
+                                " good.pcd out.csv -radius 0.3 -svg link.svg");
+  ASSERT_EQ (result.exit_code, 0) << result.output;
+  EXPECT_TRUE (std::filesystem::is_symlink (path ("link.svg")));
+  std::ostringstream svg;
+  svg << std::ifstream (path ("old.svg")).rdbuf();
+  EXPECT_NE (svg.str().find ("<svg"), std::string::npos);
+  struct stat status;
+  ASSERT_EQ (::stat (path ("out.csv").c_str(), &status), 0);
+  EXPECT_EQ (status.st_mode & 07777, 0640u);
+  std::ostringstream csv;
+  csv << std::ifstream (path ("out.csv")).rdbuf();
+  EXPECT_EQ (csv.str().rfind ("dim,birth,death\n", 0), 0u);
+}
+
+TEST_F (BadInputMatrix, DoubleAndIntegerCoordinatesGiveTheFloatDiagram)
+{
+  pcl::PointCloud<pcl::PointXYZ> circle;
+  pcl::io::loadPCDFile (path ("good.pcd"), circle);
+  std::string doubles, integers;
+  for (const auto& point : circle)
+    for (const float value : {point.x, point.y, point.z}) {
+      const double as_double = value;
+      doubles.append (reinterpret_cast<const char*> (&as_double), sizeof (double));
+      const auto as_integer = static_cast<std::int32_t> (std::lround (value * 1000));
+      integers.append (reinterpret_cast<const char*> (&as_integer),
+                       sizeof (as_integer));
+    }
+  writeFile (
+      path ("doubles.pcd"),
+      pcl::tda::test::pcdHeader ("x y z", "8 8 8", "F F F", circle.size(), "binary") +
+          doubles);
+  writeFile (
+      path ("integers.pcd"),
+      pcl::tda::test::pcdHeader ("x y z", "4 4 4", "I I I", circle.size(), "binary") +
+          integers);
+  std::map<std::string, std::string> diagrams;
+  for (const auto& [input, radius] :
+       {std::pair<std::string, std::string> ("good", "0.3"),
+        {"doubles", "0.3"},
+        {"integers", "300"}}) {
+    const RunResult result = run ("cd " + folder_ + " && " + tool ("barcode") + " " +
+                                  input + ".pcd " + input + ".csv -radius " + radius);
+    ASSERT_EQ (result.exit_code, 0) << result.output;
+    EXPECT_EQ (result.output.find ("Failed to find match"), std::string::npos);
+    std::ostringstream csv;
+    csv << std::ifstream (path (input + ".csv")).rdbuf();
+    diagrams[input] = csv.str();
+  }
+  EXPECT_EQ (diagrams["doubles"], diagrams["good"]);
+  // The integer cloud is the circle in millimetres: as many intervals.
+  EXPECT_EQ (
+      std::count (diagrams["integers"].begin(), diagrams["integers"].end(), '\n'),
+      std::count (diagrams["good"].begin(), diagrams["good"].end(), '\n'));
+  EXPECT_GT (std::count (diagrams["good"].begin(), diagrams["good"].end(), '\n'), 100);
+}
