@@ -13,11 +13,11 @@
 
 #include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
-#include <pcl/console/parse.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/search/kdtree.h>
 #include <pcl/segmentation/extract_clusters.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
@@ -155,12 +155,30 @@ fixed (double value, int digits)
 int
 main (int argc, char** argv)
 {
+  if (pcl::tda::helpRequested (argc, argv)) {
+    std::printf ("Usage: %s [data_dir] [-runs N]\n"
+                 "  Times PersistentEuclideanClusterExtraction against "
+                 "pcl::EuclideanClusterExtraction\n"
+                 "  on the same inputs (medians of N >= 5 runs, default 7).\n",
+                 argv[0]);
+    return 0;
+  }
   std::string data = "../shared/data";
-  if (argc > 1 && argv[1][0] != '-')
-    data = argv[1];
-  int runs = 7;
-  pcl::console::parse_argument (argc, argv, "-runs", runs);
-  runs = std::max (runs, 5);
+  long runs_option = 7;
+  try {
+    pcl::tda::ToolCommandLine command_line;
+    command_line.addInteger ("-runs", runs_option, 5, 1000);
+    const std::vector<std::string> folders = command_line.parse (argc, argv);
+    if (folders.size() > 1)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one data folder.");
+    if (!folders.empty())
+      data = folders[0];
+  }
+  catch (const pcl::PCLException& error) {
+    std::fprintf (stderr, "%s\n", pcl::tda::errorMessage (error).c_str());
+    return 1;
+  }
+  const int runs = static_cast<int> (runs_option);
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
 
   std::vector<Input> inputs;
