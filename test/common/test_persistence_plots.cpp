@@ -571,7 +571,8 @@ TEST (BarcodeSVG, SeveralEssentialBarsStaySeparate)
     diagram.push_back ({0, 0, INF});
   for (int i = 1; i <= 500; ++i)
     diagram.push_back ({0, 0, 0.001 * i});
-  const auto bars = withClass (parseXml (barcode (diagram)), "essential");
+  const auto svg = parseXml (barcode (diagram)); // the bars point into it
+  const auto bars = withClass (svg, "essential");
   ASSERT_EQ (bars.size(), 4u);
   for (std::size_t i = 1; i < bars.size(); ++i) {
     const double top = number (*bars[i], "y");
