@@ -3,10 +3,10 @@
 
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
+#include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
-#include <pcl/tda/apps/voxel_grid_check.h>
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>
@@ -159,7 +159,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     return 1;
   if (options.leaf > 0.0) {
     try {
-      cloud = pcl::tda::checkedVoxelGridFilter (cloud, options.leaf);
+      cloud = pcl::tda::voxelGridFilter<pcl::PointXYZ> (cloud, options.leaf);
     }
     catch (const pcl::PCLException& error) {
       console.error (pcl::tda::errorMessage (error));

@@ -8,7 +8,6 @@
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
-#include <pcl/tda/apps/voxel_grid_check.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/persistence_plots.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
@@ -135,13 +134,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   pcl::tda::PreprocessingCounts counts;
   Cloud::Ptr points;
   try {
-    // The voxel grid comes last: apply it here, once its leaf is checked against
-    // the points it grids (PCL's grid ignores a leaf that is too small).
-    pcl::tda::ScenePreprocessing before_grid = options.preprocessing;
-    before_grid.leaf = 0.0;
-    points = pcl::tda::preprocessScene (*cloud, before_grid, &counts);
-    if (options.preprocessing.leaf > 0.0)
-      points = pcl::tda::checkedVoxelGridFilter (points, options.preprocessing.leaf);
+    points = pcl::tda::preprocessScene (*cloud, options.preprocessing, &counts);
   }
   catch (const pcl::PCLException& error) {
     console.error ("Cannot preprocess " + options.input + ": " +

@@ -3,6 +3,7 @@
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/segmentation/sac_segmentation.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/apps/voxel_grid_check.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/exceptions.h>
 
@@ -98,6 +99,7 @@ template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr
 voxelGridFilter (const typename pcl::PointCloud<PointT>::ConstPtr& cloud, double leaf)
 {
+  checkVoxelGridLeaf (*cloud, leaf); // PCL's grid ignores a leaf that is too small
   pcl::VoxelGrid<PointT> grid;
   grid.setInputCloud (cloud);
   const auto size = static_cast<float> (leaf);

@@ -6,34 +6,53 @@
 namespace pcl {
 namespace tda {
 
-std::vector<PersistencePair>
-PersistenceResult::pairs (const FilteredComplex& complex, int max_dimension) const
+namespace {
+
+/** Calls \a visit with every pair of \a result of dimension <= \a max_dimension, in
+ * the order PersistenceResult::pairs() documents: the one walk that pairs() and
+ * diagram() share. */
+template <typename Visit>
+void
+forEachPair (const PersistenceResult& result,
+             const FilteredComplex& complex,
+             int max_dimension,
+             Visit visit)
 {
   constexpr double INF = std::numeric_limits<double>::infinity();
   const auto& edges = complex.edges();
   const auto& triangles = complex.triangles();
-  std::vector<PersistencePair> result;
-  const std::vector<SimplexIndex> killed_vertex = killedVertices();
+  const std::vector<SimplexIndex> killed_vertex = result.killedVertices();
   for (SimplexIndex e = 0; e < killed_vertex.size(); ++e)
     if (killed_vertex[e] != INVALID_SIMPLEX)
-      result.push_back ({0, killed_vertex[e], e, 0.0, edges[e].value});
-  for (SimplexIndex v = 0; v < vertex_killer.size(); ++v)
-    if (vertex_killer[v] == INVALID_SIMPLEX)
-      result.push_back ({0, v, INVALID_SIMPLEX, 0.0, INF});
-  if (std::min (max_dimension, this->max_dimension) < 1)
-    return result;
+      visit (PersistencePair{0, killed_vertex[e], e, 0.0, edges[e].value});
+  for (SimplexIndex v = 0; v < result.vertex_killer.size(); ++v)
+    if (result.vertex_killer[v] == INVALID_SIMPLEX)
+      visit (PersistencePair{0, v, INVALID_SIMPLEX, 0.0, INF});
+  if (std::min (max_dimension, result.max_dimension) < 1)
+    return;
 
   std::vector<SimplexIndex> killed_edge (triangles.size(), INVALID_SIMPLEX);
-  for (SimplexIndex e = 0; e < edge_killer.size(); ++e)
-    if (edge_killer[e] != INVALID_SIMPLEX)
-      killed_edge[edge_killer[e]] = e;
+  for (SimplexIndex e = 0; e < result.edge_killer.size(); ++e)
+    if (result.edge_killer[e] != INVALID_SIMPLEX)
+      killed_edge[result.edge_killer[e]] = e;
   for (SimplexIndex t = 0; t < killed_edge.size(); ++t)
     if (killed_edge[t] != INVALID_SIMPLEX)
-      result.push_back (
-          {1, killed_edge[t], t, edges[killed_edge[t]].value, triangles[t].value});
-  for (SimplexIndex e = 0; e < edge_killer.size(); ++e)
-    if (edge_positive[e] && edge_killer[e] == INVALID_SIMPLEX)
-      result.push_back ({1, e, INVALID_SIMPLEX, edges[e].value, INF});
+      visit (PersistencePair{
+          1, killed_edge[t], t, edges[killed_edge[t]].value, triangles[t].value});
+  for (SimplexIndex e = 0; e < result.edge_killer.size(); ++e)
+    if (result.edge_positive[e] && result.edge_killer[e] == INVALID_SIMPLEX)
+      visit (PersistencePair{1, e, INVALID_SIMPLEX, edges[e].value, INF});
+}
+
+} // namespace
+
+std::vector<PersistencePair>
+PersistenceResult::pairs (const FilteredComplex& complex, int max_dimension) const
+{
+  std::vector<PersistencePair> result;
+  forEachPair (*this, complex, max_dimension, [&result] (const PersistencePair& pair) {
+    result.push_back (pair);
+  });
   return result;
 }
 
@@ -41,9 +60,11 @@ PersistenceDiagram
 PersistenceResult::diagram (const FilteredComplex& complex, int max_dimension) const
 {
   PersistenceDiagram intervals;
-  for (const auto& pair : pairs (complex, max_dimension))
-    if (pair.birth != pair.death)
-      intervals.push_back ({pair.dimension, pair.birth, pair.death});
+  forEachPair (
+      *this, complex, max_dimension, [&intervals] (const PersistencePair& pair) {
+        if (pair.birth != pair.death)
+          intervals.push_back ({pair.dimension, pair.birth, pair.death});
+      });
   return intervals;
 }
 

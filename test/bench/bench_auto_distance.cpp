@@ -21,6 +21,8 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/search/kdtree.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/common/error_message.h>
 #include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
@@ -29,13 +31,12 @@
 #include "segmentation/cluster_oracles.h"
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <string>
@@ -95,61 +96,25 @@ printUsage (std::FILE* stream)
       PCL_TDA_DATA_DIR);
 }
 
-/** Parses the whole of \a text as a T; false when it is not one. */
-template <typename T>
-bool
-parseWhole (const char* text, T& value)
+/** Parses the command line into \a options (the tools' strict parser).
+ * \throws pcl::BadArgumentException naming the option at fault */
+void
+parseOptions (int argc, char** argv, Options& options)
 {
-  const char* end = text + std::strlen (text);
-  const auto [stop, error] = std::from_chars (text, end, value);
-  return error == std::errc() && stop == end;
-}
-
-/** Parses the command line into \a options; false after printing why it is wrong.
- * Sets \a help for -h. */
-bool
-parseOptions (int argc, char** argv, Options& options, bool& help)
-{
-  help = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string option = argv[i];
-    if (option == "-h" || option == "--help") {
-      help = true;
-      return true;
-    }
-    if (i == 1 && option[0] != '-') {
-      options.data = option;
-      continue;
-    }
-    if (i + 1 == argc) {
-      std::fprintf (stderr, "pcl_tda_bench_auto_distance: %s needs a value\n", argv[i]);
-      return false;
-    }
-    const char* value = argv[++i];
-    bool valid = false;
-    if (option == "-scenes")
-      valid = parseWhole (value, options.scenes) && options.scenes > 0;
-    else if (option == "-seed")
-      valid = parseWhole (value, options.seed);
-    else if (option == "-leaf")
-      valid = parseWhole (value, options.leaf) && options.leaf >= 0.0 &&
-              std::isfinite (options.leaf);
-    else if (option == "-min")
-      valid = parseWhole (value, options.min_size) && options.min_size > 0;
-    else {
-      std::fprintf (
-          stderr, "pcl_tda_bench_auto_distance: unknown option %s\n", argv[i - 1]);
-      return false;
-    }
-    if (!valid) {
-      std::fprintf (stderr,
-                    "pcl_tda_bench_auto_distance: bad value '%s' for %s\n",
-                    value,
-                    argv[i - 1]);
-      return false;
-    }
-  }
-  return true;
+  long scenes = static_cast<long> (options.scenes), seed = 1000, min_size = 20;
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addInteger ("-scenes", scenes, 1, 100000);
+  command_line.addInteger ("-seed", seed, 0, std::numeric_limits<long>::max());
+  command_line.addNumber ("-leaf", options.leaf, pcl::tda::NumberRange::atLeast (0.0));
+  command_line.addInteger ("-min", min_size, 1, std::numeric_limits<int>::max());
+  const std::vector<std::string> folders = command_line.parse (argc, argv);
+  if (folders.size() > 1)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one data folder.");
+  if (!folders.empty())
+    options.data = folders[0];
+  options.scenes = static_cast<std::size_t> (scenes);
+  options.seed = static_cast<std::uint64_t> (seed);
+  options.min_size = static_cast<pcl::uindex_t> (min_size);
 }
 
 double
@@ -496,15 +461,18 @@ evaluateRealScans (const Options& options, std::ostringstream& json)
 int
 main (int argc, char** argv)
 {
-  Options options;
-  bool help = false;
-  if (!parseOptions (argc, argv, options, help)) {
-    printUsage (stderr);
-    return 1;
-  }
-  if (help) {
+  if (pcl::tda::helpRequested (argc, argv)) {
     printUsage (stdout);
     return 0;
+  }
+  Options options;
+  try {
+    parseOptions (argc, argv, options);
+  }
+  catch (const pcl::PCLException& error) {
+    std::fprintf (stderr, "%s\n", pcl::tda::errorMessage (error).c_str());
+    printUsage (stderr);
+    return 1;
   }
   pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
 
