@@ -1,6 +1,7 @@
 /** pcl_tda_generate: writes a synthetic point cloud with exact ground truth (a
- * circle, torus or sphere with known Betti numbers, or a labelled tabletop scene)
- * to a binary PCD file. */
+ * circle, torus or sphere with known Betti numbers, a tabletop scene labelled by
+ * object, or a tabletop or depth camera scene painted in colour regions and
+ * labelled by region) to a binary PCD file. */
 
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_files.h>
@@ -8,6 +9,7 @@
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/shapes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/exceptions.h>
@@ -25,36 +27,71 @@ namespace {
  * then take about 0.5 GB. */
 constexpr long MAX_POINTS = 10000000;
 
+/** The most colour noise -colour-noise accepts, in 0-255 levels. */
+constexpr double MAX_COLOUR_NOISE = 255.0;
+
 void
 printHelp (const char* program)
 {
-  print_info ("Syntax is: %s <circle|torus|sphere|tabletop> output.pcd <options>\n",
+  print_info ("Syntax is: %s <circle|torus|sphere|tabletop|regions|depth-regions> "
+              "output.pcd <options>\n",
               program);
-  print_info ("  where options are:\n");
+  print_info ("  where the kinds are:\n");
+  print_info (
+      "    circle, torus, sphere = a noisy shape with known Betti numbers\n"
+      "    tabletop      = objects on a table seen by a depth camera, labelled by "
+      "object\n"
+      "                    (table %u, objects %u..)\n"
+      "    regions       = the tabletop scene with its objects painted in colour "
+      "regions (faces,\n"
+      "                    bands, halves; some adjacent ones only 10-18 Delta E "
+      "apart), labelled by\n"
+      "                    region (table 1, regions 2..)\n"
+      "    depth-regions = an organized 640 x 480 frame of a simulated "
+      "structured-light camera,\n"
+      "                    objects painted in two tones, labelled by region (table "
+      "1, regions 2..;\n"
+      "                    0 and NaN coordinates for lost pixels)\n",
+      pcl::tda::TABLE_LABEL,
+      pcl::tda::FIRST_OBJECT_LABEL);
+  print_info ("  and the options are:\n");
   print_info (
       "    -n N       = number of points of a shape, 1 to %ld (default: circle "
       "1000,\n"
-      "                 torus 2500, sphere 1500); for tabletop, about N samples "
-      "on the table\n"
-      "                 top, which sets the sampling density (default: one "
-      "point per 1 cm x 1 cm;\n"
-      "                 at least 1750)\n",
+      "                 torus 2500, sphere 1500); for tabletop and regions, about "
+      "N samples on\n"
+      "                 the table top, which sets the sampling density (default: "
+      "one point per\n"
+      "                 1 cm x 1 cm; at least 1750); not for depth-regions\n",
       MAX_POINTS);
-  print_info ("    -noise S   = Gaussian noise sigma of a shape (default 0.01), or the "
+  print_info ("    -noise S   = Gaussian noise sigma of a shape (default 0.01); the "
               "depth noise sigma at 1 m\n"
-              "                 of the tabletop camera (default 0.001)\n");
+              "                 of the tabletop camera (default: tabletop 0.001, "
+              "regions 0.0005);\n"
+              "                 for depth-regions, the depth noise coefficient k in "
+              "1/m, sigma k z^2 at\n"
+              "                 depth z (default 0.0015)\n");
+  print_info ("    -colour-noise S\n"
+              "               = colour noise sigma in levels of 0-255, 0 to %g "
+              "(default 4); for tabletop,\n"
+              "                 regions and depth-regions only\n",
+              MAX_COLOUR_NOISE);
   print_info ("    -seed S    = random seed, >= 0 (default 0); equal seeds give "
               "identical files\n");
-  print_info ("    -objects K = number of tabletop objects, 0 to %zu (default 4)\n",
-              pcl::tda::MAX_TABLETOP_OBJECTS);
+  print_info ("    -objects K = number of objects of tabletop and regions, 0 to %zu "
+              "(default 4), or of\n"
+              "                 depth-regions, 1 to %zu (default: 3 to 6, from the "
+              "seed)\n",
+              pcl::tda::MAX_TABLETOP_OBJECTS,
+              pcl::tda::MAX_DEPTH_CAMERA_OBJECTS);
 }
 
-/** The parameters of the command line; n 0, objects and noise < 0 when not
- * given. */
+/** The parameters of the command line; n 0, objects, noise and colour noise < 0
+ * when not given. */
 struct Options {
   std::string kind, output;
   long n = 0, seed = 0, objects = -1;
-  double noise = -1.0;
+  double noise = -1.0, colour_noise = -1.0;
 };
 
 /** Reads the command line into \a options.
@@ -68,7 +105,12 @@ parseOptions (int argc, char** argv, Options& options)
       "-noise",
       options.noise,
       pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
+  command_line.addNumber ("-colour-noise",
+                          options.colour_noise,
+                          pcl::tda::NumberRange::atLeast (0.0, MAX_COLOUR_NOISE));
   command_line.addInteger ("-seed", options.seed, 0, std::numeric_limits<long>::max());
+  static_assert (pcl::tda::MAX_DEPTH_CAMERA_OBJECTS == pcl::tda::MAX_TABLETOP_OBJECTS,
+                 "-objects has one range");
   command_line.addInteger ("-objects",
                            options.objects,
                            0,
@@ -77,15 +119,31 @@ parseOptions (int argc, char** argv, Options& options)
   pcl::tda::checkArguments (arguments, {{"kind", ""}, {"output", ".pcd"}});
   options.kind = arguments[0];
   options.output = arguments[1];
-  if (options.kind != "circle" && options.kind != "torus" && options.kind != "sphere" &&
-      options.kind != "tabletop")
+  const std::string& kind = options.kind;
+  const bool shape = kind == "circle" || kind == "torus" || kind == "sphere";
+  if (!shape && kind != "tabletop" && kind != "regions" && kind != "depth-regions")
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         "Unknown kind '" << options.kind
-                                          << "': use circle, torus, sphere or "
-                                             "tabletop.");
-  if (options.objects >= 0 && options.kind != "tabletop")
+                         "Unknown kind '"
+                             << kind
+                             << "': use circle, torus, sphere, tabletop, regions or "
+                                "depth-regions.");
+  if (options.objects >= 0 && shape)
+    PCL_THROW_EXCEPTION (
+        pcl::BadArgumentException,
+        "Option -objects applies to tabletop, regions and depth-regions only.");
+  if (options.colour_noise >= 0.0 && shape)
+    PCL_THROW_EXCEPTION (
+        pcl::BadArgumentException,
+        "Option -colour-noise applies to tabletop, regions and depth-regions only.");
+  if (options.n > 0 && kind == "depth-regions")
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         "Option -objects applies to tabletop only.");
+                         "Option -n does not apply to depth-regions (a 640 x 480 "
+                         "frame).");
+  if (options.objects == 0 && kind == "depth-regions")
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Option -objects needs an integer from 1 to "
+                             << pcl::tda::MAX_DEPTH_CAMERA_OBJECTS
+                             << " for depth-regions, not '0'.");
 }
 
 /** Writes the cloud as binary PCD to the temporary file of \a outputs and commits
@@ -109,36 +167,123 @@ saveCloud (const std::string& path,
   return true;
 }
 
+/** Prints the region labels of a scene painted in colour regions: the table's
+ * (label 1, when \a table), the objects' regions up to \a regions, and the number
+ * of similar pairs. */
+void
+printRegions (bool table, std::size_t regions, std::size_t similar_pairs)
+{
+  print_info ("Region labels: ");
+  if (table) {
+    print_info ("table ");
+    print_value ("%u", 1u);
+    print_info (", ");
+  }
+  print_info ("object regions ");
+  print_value ("%u", table ? 2u : 1u);
+  print_info (" to ");
+  print_value ("%zu", regions);
+  print_info ("; ");
+  print_value ("%zu", similar_pairs);
+  print_info (" pairs of adjacent regions in similar colours\n");
+}
+
+/** Generates a tabletop scene (regions: painted in colour regions) and saves it. */
+int
+runTabletop (const Options& options,
+             pcl::tda::ToolOutputs& outputs,
+             pcl::tda::ToolConsole& console)
+{
+  const bool regions = options.kind == "regions";
+  pcl::tda::TabletopParameters parameters;
+  if (regions) {
+    parameters.colour_regions = true;
+    parameters.setNoise (pcl::tda::TABLETOP_MODERATE_NOISE);
+  }
+  if (options.n > 0)
+    parameters.point_spacing =
+        static_cast<float> (std::sqrt (static_cast<double> (parameters.table_width) *
+                                       parameters.table_depth / options.n));
+  if (options.noise >= 0.0)
+    parameters.noise_sigma = static_cast<float> (options.noise);
+  if (options.colour_noise >= 0.0)
+    parameters.colour_noise = static_cast<float> (options.colour_noise);
+  if (options.objects >= 0)
+    parameters.num_objects = static_cast<std::size_t> (options.objects);
+  parameters.seed = static_cast<std::uint64_t> (options.seed);
+  const pcl::tda::TabletopScene scene = pcl::tda::generateTabletopScene (parameters);
+  console.endStep (
+      std::to_string (scene.cloud->size()) + " points, " +
+      std::to_string (scene.objects.size()) + " objects" +
+      (regions ? ", " + std::to_string (scene.regions.size()) + " colour regions"
+               : ""));
+  if (regions) {
+    printRegions (true, scene.regions.size(), scene.similar_regions.size());
+    return saveCloud (
+               options.output, *pcl::tda::regionLabelledCloud (scene), outputs, console)
+               ? 0
+               : 1;
+  }
+  print_info ("Labels: table ");
+  print_value ("%u", pcl::tda::TABLE_LABEL);
+  print_info (", objects ");
+  print_value ("%u", pcl::tda::FIRST_OBJECT_LABEL);
+  print_info (" to ");
+  print_value ("%zu\n", pcl::tda::FIRST_OBJECT_LABEL + scene.objects.size() - 1);
+  return saveCloud (options.output, *scene.cloud, outputs, console) ? 0 : 1;
+}
+
+/** Generates a depth camera frame painted in colour regions, table kept, and saves
+ * it labelled by region. */
+int
+runDepthRegions (const Options& options,
+                 pcl::tda::ToolOutputs& outputs,
+                 pcl::tda::ToolConsole& console)
+{
+  pcl::tda::DepthCameraParameters parameters;
+  parameters.colour_regions = true;
+  parameters.remove_table = false;
+  parameters.colour_noise = 4.0f;
+  if (options.noise >= 0.0)
+    parameters.noise_coefficient = static_cast<float> (options.noise);
+  if (options.colour_noise >= 0.0)
+    parameters.colour_noise = static_cast<float> (options.colour_noise);
+  if (options.objects > 0)
+    parameters.min_objects = parameters.max_objects =
+        static_cast<std::size_t> (options.objects);
+  parameters.seed = static_cast<std::uint64_t> (options.seed);
+  const pcl::tda::DepthCameraScene scene =
+      pcl::tda::generateDepthCameraScene (parameters);
+  std::size_t measured = 0;
+  for (const std::uint32_t label : scene.region_labels)
+    measured += label != 0;
+  console.endStep (std::to_string (measured) + " of " +
+                   std::to_string (scene.cloud->size()) + " pixels measured, " +
+                   std::to_string (scene.objects.size()) + " objects, " +
+                   std::to_string (scene.regions.size()) + " colour regions");
+  printRegions (!scene.regions.empty() &&
+                    scene.regions[0].object_label == pcl::tda::DEPTH_BACKGROUND_LABEL,
+                scene.regions.size(),
+                scene.similar_regions.size());
+  return saveCloud (
+             options.output, *pcl::tda::regionLabelledCloud (scene), outputs, console)
+             ? 0
+             : 1;
+}
+
 /** Generates the cloud of \a options and saves it. */
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
   pcl::tda::ToolOutputs outputs ("", {{"output", options.output}});
   const std::string& kind = options.kind;
-  const long n = options.n, seed = options.seed, objects = options.objects;
+  const long n = options.n, seed = options.seed;
   const double noise = options.noise;
   console.beginStep ("Generating", kind);
-  if (kind == "tabletop") {
-    pcl::tda::TabletopParameters parameters;
-    if (n > 0)
-      parameters.point_spacing = static_cast<float> (std::sqrt (
-          static_cast<double> (parameters.table_width) * parameters.table_depth / n));
-    if (noise >= 0.0)
-      parameters.noise_sigma = static_cast<float> (noise);
-    if (objects >= 0)
-      parameters.num_objects = static_cast<std::size_t> (objects);
-    parameters.seed = static_cast<std::uint64_t> (seed);
-    const pcl::tda::TabletopScene scene = pcl::tda::generateTabletopScene (parameters);
-    console.endStep (std::to_string (scene.cloud->size()) + " points, " +
-                     std::to_string (scene.objects.size()) + " objects");
-    print_info ("Labels: table ");
-    print_value ("%u", pcl::tda::TABLE_LABEL);
-    print_info (", objects ");
-    print_value ("%u", pcl::tda::FIRST_OBJECT_LABEL);
-    print_info (" to ");
-    print_value ("%zu\n", pcl::tda::FIRST_OBJECT_LABEL + scene.objects.size() - 1);
-    return saveCloud (options.output, *scene.cloud, outputs, console) ? 0 : 1;
-  }
+  if (kind == "tabletop" || kind == "regions")
+    return runTabletop (options, outputs, console);
+  if (kind == "depth-regions")
+    return runDepthRegions (options, outputs, console);
 
   // The parameters every shape has, from the options given.
   const auto with_options = [&] (auto parameters) {

@@ -4,6 +4,7 @@
 // H0 barcode.
 
 #include <pcl/console/print.h>
+#include <pcl/tda/apps/cloud_picture.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
@@ -14,7 +15,6 @@
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -98,27 +98,6 @@ parseOptions (int argc, char** argv, Options& options)
                                                         << options.max_size << ".");
 }
 
-/** A colour per label: grey for 0, then well-separated hues. */
-std::array<std::uint8_t, 3>
-labelColour (std::size_t label)
-{
-  static const std::array<std::array<std::uint8_t, 3>, 12> PALETTE{{{230, 25, 75},
-                                                                    {60, 180, 75},
-                                                                    {0, 130, 200},
-                                                                    {245, 130, 48},
-                                                                    {145, 30, 180},
-                                                                    {70, 240, 240},
-                                                                    {240, 50, 230},
-                                                                    {210, 245, 60},
-                                                                    {250, 190, 212},
-                                                                    {0, 128, 128},
-                                                                    {170, 110, 40},
-                                                                    {128, 0, 0}}};
-  if (label == 0)
-    return {128, 128, 128};
-  return PALETTE[(label - 1) % PALETTE.size()];
-}
-
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
@@ -180,7 +159,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     point.r = point.g = point.b = 128;
   }
   for (std::size_t c = 0; c < clusters.size(); ++c) {
-    const auto colour = labelColour (c + 1);
+    const auto colour = pcl::tda::labelColor (c + 1);
     Eigen::Vector4f centroid = Eigen::Vector4f::Zero();
     for (const auto index : clusters[c].indices) {
       auto& point = labelled[index];

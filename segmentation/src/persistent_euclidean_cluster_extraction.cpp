@@ -2,6 +2,7 @@
 #include <pcl/tda/common/point_types.h>
 #include <pcl/tda/common/union_find.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
+#include <pcl/tda/segmentation/stable_step.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
@@ -81,52 +82,15 @@ chooseClusterDistance (const FilteredComplex& complex,
   if (!(floor < max_distance))
     return choice;
 
-  // The count of significant components is a step function of the scale; its steps over
-  // (floor, max_distance] are the candidate intervals, compared by their length on a
-  // logarithmic scale, log(high / low).
-  struct Step {
-    double low;
-    double high;
-    std::ptrdiff_t count;
-  };
-  std::vector<Step> steps;
-  std::sort (events.begin(), events.end());
-  std::ptrdiff_t count = 0;
-  std::size_t e = 0;
-  for (double low = floor; low < max_distance;) {
-    for (; e < events.size() && events[e].first <= low; ++e)
-      count += events[e].second;
-    const double high =
-        e < events.size() ? std::min (events[e].first, max_distance) : max_distance;
-    if (count > 0)
-      steps.push_back ({low, high, count});
-    low = high;
-  }
-  const auto length = [] (const Step* step) {
-    return step ? std::log (step->high / step->low) : 0.0;
-  };
-  // The longest step of a split (two clusters or more) and of one cluster, the
-  // longest of the other splits; the earliest of equally long ones.
-  const Step *split = nullptr, *whole = nullptr;
-  for (const Step& step : steps) {
-    const Step*& best = step.count > 1 ? split : whole;
-    if (length (&step) > length (best))
-      best = &step;
-  }
-  const Step* chosen =
-      split && (length (split) >= std::log (gap_ratio) || !whole) ? split : whole;
-  if (!chosen)
+  // The count of significant components is a step function of the scale.
+  StableStep chosen;
+  if (!longestStableStep (events, floor, max_distance, gap_ratio, false, chosen))
     return choice; // no significant component above the floor
-  double runner_up = 0.0;
-  for (const Step& step : steps)
-    if (step.count > 1 && &step != chosen)
-      runner_up = std::max (runner_up, length (&step));
-  choice.low = chosen->low;
-  choice.high = chosen->high;
-  choice.num_clusters = static_cast<std::size_t> (chosen->count);
+  choice.low = chosen.low;
+  choice.high = chosen.high;
+  choice.num_clusters = chosen.count;
   choice.distance = std::sqrt (choice.low * choice.high);
-  choice.clear = length (chosen) >= std::log (gap_ratio) &&
-                 length (chosen) >= gap_ratio * runner_up;
+  choice.clear = chosen.clear;
   return choice;
 }
 

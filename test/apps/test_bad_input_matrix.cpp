@@ -4,6 +4,7 @@
 // output created or changed, no temporary file left). Also -h, and outputs that are
 // links or have their own permission bits.
 
+#include <pcl/common/io.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/generators/shapes.h>
 
@@ -68,8 +69,20 @@ protected:
     std::filesystem::create_directories (folder_ + "/x.pcd");
     pcl::tda::CircleParameters circle;
     circle.num_points = 200;
-    pcl::io::savePCDFileBinary (path ("good.pcd"),
-                                *pcl::tda::generateCircle (circle).cloud);
+    const auto points = pcl::tda::generateCircle (circle).cloud;
+    pcl::io::savePCDFileBinary (path ("good.pcd"), *points);
+    // The same points in two colours, for pcl_tda_regions.
+    pcl::PointCloud<pcl::PointXYZRGB> coloured;
+    pcl::copyPointCloud (*points, coloured);
+    for (std::size_t i = 0; i < coloured.size(); ++i) {
+      coloured[i].r = i % 2 ? 200 : 40;
+      coloured[i].g = 90;
+      coloured[i].b = 60;
+    }
+    pcl::io::savePCDFileBinary (path ("colour.pcd"), coloured);
+    pcl::PointCloud<pcl::PointXYZ> plain;
+    pcl::copyPointCloud (*points, plain);
+    pcl::io::savePCDFileBinary (path ("plain.pcd"), plain);
     for (const char* output : {"out.csv", "out.pcd", "old.svg"})
       writeFile (path (output), "old content\n");
     ASSERT_EQ (::mkfifo (path ("fifo.pcd").c_str(), 0600), 0);
@@ -124,6 +137,7 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
     writeFile (path ("bad.pcd"), content);
     expectRefusal ("barcode", "bad.pcd out.csv -radius 0.1", message);
     expectRefusal ("segment", "bad.pcd out.pcd -radius 0.1 -plane 0", message);
+    expectRefusal ("regions", "bad.pcd out.pcd -radius 0.1", message);
   }
   const std::vector<std::pair<std::string, std::string>> inputs{
       {"x.pcd", "x.pcd is a directory, not a PCD file"},
@@ -133,7 +147,20 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
   for (const auto& [input, message] : inputs) {
     expectRefusal ("barcode", input + " out.csv -radius 0.1", message);
     expectRefusal ("segment", input + " out.pcd -radius 0.1", message);
+    expectRefusal ("regions", input + " out.pcd", message);
   }
+  expectRefusal (
+      "regions", "plain.pcd out.pcd", "plain.pcd has no colour (no rgb or rgba field)");
+  // Normals in the file, one of them NaN at a finite point.
+  pcl::PointCloud<pcl::PointXYZRGBNormal> with_normals;
+  pcl::io::loadPCDFile (path ("colour.pcd"), with_normals);
+  for (auto& point : with_normals)
+    point.normal_x = 0.0f, point.normal_y = 0.0f, point.normal_z = 1.0f;
+  with_normals[5].normal_z = std::nanf ("");
+  pcl::io::savePCDFileBinary (path ("nan_normal.pcd"), with_normals);
+  expectRefusal ("regions",
+                 "nan_normal.pcd out.pcd",
+                 "1 points with a finite position have a non-finite normal");
 }
 
 TEST_F (BadInputMatrix, BadOptions)
@@ -207,6 +234,29 @@ TEST_F (BadInputMatrix, BadOptions)
   for (const auto& [arguments, message] : segment_cases)
     expectRefusal ("segment", arguments, message);
 
+  const std::string regions = "colour.pcd out.pcd ";
+  const std::vector<std::pair<std::string, std::string>> regions_cases{
+      {regions + "-radius 0",
+       "Option -radius needs a number > 0 and <= 1e+09, not '0'."},
+      {regions + "-radius abc",
+       "Option -radius needs a number > 0 and <= 1e+09, not 'abc'."},
+      {regions + "-color 0", "Option -color needs a number > 0 and <= 1000, not '0'."},
+      {regions + "-color -3",
+       "Option -color needs a number > 0 and <= 1000, not '-3'."},
+      {regions + "-point-color nan",
+       "Option -point-color needs a number > 0 and <= 1000, not 'nan'."},
+      {regions + "-angle 0", "Option -angle needs a number > 0 and <= 90, not '0'."},
+      {regions + "-angle 91", "Option -angle needs a number > 0 and <= 90, not '91'."},
+      {regions + "-min 0", "Option -min needs an integer from 1 to 2147483647"},
+      {regions + "-color 5 -auto", "-color and -auto exclude each other: give one."},
+      {regions + "-angle 10 -no-normals", "-angle has no use with -no-normals."},
+      {regions + "-png", "Option -png needs a value."},
+      {regions + "-foo", "Unknown option -foo"},
+      {"colour.pcd out.csv", "The output out.csv must be a .pcd file."},
+  };
+  for (const auto& [arguments, message] : regions_cases)
+    expectRefusal ("regions", arguments, message);
+
   const std::vector<std::pair<std::string, std::string>> generate_cases{
       {"cube out.pcd", "Unknown kind 'cube'"},
       {"circle out.csv", "The output out.csv must be a .pcd file."},
@@ -219,7 +269,8 @@ TEST_F (BadInputMatrix, BadOptions)
        "Option -noise needs a number >= 0 and <= 3.40282e+38, not 'abc'."},
       {"circle out.pcd -seed -1", "Option -seed needs an integer >= 0, not '-1'."},
       {"tabletop out.pcd -objects 99", "Option -objects needs an integer from 0 to 8"},
-      {"circle out.pcd -objects 2", "Option -objects applies to tabletop only."},
+      {"circle out.pcd -objects 2",
+       "Option -objects applies to tabletop, regions and depth-regions only."},
       {"circle out.pcd -radius 2", "Unknown option -radius"},
       {"circle out.pcd extra.pcd",
        "Need the kind and the output .pcd file, not 3 arguments."},
@@ -259,6 +310,19 @@ TEST_F (BadInputMatrix, BadOutputs)
   };
   for (const auto& [arguments, message] : segment_cases)
     expectRefusal ("segment", arguments, message);
+  const std::vector<std::pair<std::string, std::string>> regions_cases{
+      {"colour.pcd nodir/out.pcd",
+       "cannot write nodir/out.pcd: the folder nodir does not exist"},
+      {"colour.pcd out.pcd -png nodir/r.png",
+       "cannot write nodir/r.png: the folder nodir does not exist"},
+      {"colour.pcd out.pcd -svg old.svg -png old.svg",
+       "-svg and -png name the same file old.svg"},
+      {"colour.pcd colour.pcd",
+       "refusing to overwrite the input file colour.pcd (output)"},
+      {"colour.pcd out.pcd -memory 0.000001", "Region growing failed (see above)"},
+  };
+  for (const auto& [arguments, message] : regions_cases)
+    expectRefusal ("regions", arguments, message);
   expectRefusal ("generate", "circle x.pcd", "cannot write x.pcd: it is a directory");
   expectRefusal ("generate",
                  "circle nodir/c.pcd",
@@ -272,6 +336,8 @@ TEST_F (BadInputMatrix, HelpPrintsOnlyTheHelp)
         std::string ("barcode good.pcd out.csv -radius 0.3 --help"),
         std::string ("segment -h"),
         std::string ("segment good.pcd out.pcd -foo -h"),
+        std::string ("regions -h"),
+        std::string ("regions colour.pcd out.pcd -color 0 -h"),
         std::string ("generate --help"),
         std::string ("generate circle out.pcd -h")}) {
     const FolderState before = stateOf (folder_);

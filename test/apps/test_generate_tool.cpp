@@ -1,7 +1,9 @@
 // End-to-end tests of pcl_tda_generate: loadable files of every kind, the same
-// tabletop scene as the library, and refusals that leave no files behind.
+// tabletop, colour region and depth camera scenes as the library, and refusals that
+// leave no files behind.
 
 #include <pcl/io/pcd_io.h>
+#include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 
 #include <gtest/gtest.h>
@@ -9,6 +11,7 @@
 #include "generators/generator_test_utils.h"
 #include "tool_runner.h"
 
+#include <cmath>
 #include <filesystem>
 #include <map>
 #include <set>
@@ -79,6 +82,16 @@ TEST (GenerateTool, FailsOnBadArgumentsWithoutLeavingFiles)
   EXPECT_NE (0, runTool ("circle " + file + " -radius 2"));
   EXPECT_NE (0, runTool ("circle " + file + " -n"));
   EXPECT_NE (0, runTool ("tabletop " + file + " -objects 99"));
+  EXPECT_NE (0, runTool ("circle " + file + " -objects 2"));
+  EXPECT_NE (0, runTool ("sphere " + file + " -colour-noise 2"));
+  EXPECT_NE (0, runTool ("regions " + file + " -colour-noise -1"));
+  EXPECT_NE (0, runTool ("regions " + file + " -colour-noise 300"));
+  EXPECT_NE (0, runTool ("regions " + file + " -colour-noise abc"));
+  EXPECT_NE (0, runTool ("regions " + file + " -objects 9"));
+  EXPECT_NE (0, runTool ("depth-regions " + file + " -n 1000"));
+  EXPECT_NE (0, runTool ("depth-regions " + file + " -objects 0"));
+  EXPECT_NE (0, runTool ("depth-regions " + file + " -noise -1"));
+  EXPECT_NE (0, runTool ("region " + file));
   EXPECT_NE (0, runTool ("circle"));
   EXPECT_FALSE (std::filesystem::exists (file));
   // Unwritable outputs: a path in a missing folder, and an existing folder.
@@ -91,4 +104,73 @@ TEST (GenerateTool, FailsOnBadArgumentsWithoutLeavingFiles)
   EXPECT_EQ (1,
              std::distance (std::filesystem::directory_iterator (folder.path()),
                             std::filesystem::directory_iterator()));
+}
+
+TEST (GenerateTool, WritesColourRegionScenesLabelledByRegion)
+{
+  const TemporaryFolder folder;
+  // Painted tabletop scenes: the library's scene, labelled by region.
+  const std::string file = folder.path() + "/regions.pcd";
+  ASSERT_EQ (0,
+             runTool ("regions " + file +
+                      " -objects 3 -seed 5 -noise 0.001 -colour-noise 6 -n 10000"));
+  Cloud cloud;
+  ASSERT_EQ (0, pcl::io::loadPCDFile (file, cloud));
+  TabletopParameters parameters;
+  parameters.colour_regions = true;
+  parameters.num_objects = 3;
+  parameters.seed = 5;
+  parameters.noise_sigma = 0.001f;
+  parameters.colour_noise = 6.0f;
+  parameters.point_spacing = static_cast<float> (std::sqrt (
+      static_cast<double> (parameters.table_width) * parameters.table_depth / 10000));
+  const TabletopScene scene = pcl::tda::generateTabletopScene (parameters);
+  EXPECT_TRUE (identical (*pcl::tda::regionLabelledCloud (scene), cloud));
+  std::set<std::uint32_t> labels;
+  for (const auto& point : cloud)
+    labels.insert (point.label);
+  EXPECT_EQ (scene.regions.size(), labels.size());
+  EXPECT_EQ (1u, *labels.begin());
+  EXPECT_EQ (scene.regions.size(), *labels.rbegin());
+  EXPECT_GT (labels.size(), 3u + 1u);
+
+  // By default, the moderate noise of the benchmark.
+  ASSERT_EQ (0, runTool ("regions " + file + " -seed 6"));
+  ASSERT_EQ (0, pcl::io::loadPCDFile (file, cloud));
+  TabletopParameters moderate;
+  moderate.colour_regions = true;
+  moderate.seed = 6;
+  moderate.setNoise (pcl::tda::TABLETOP_MODERATE_NOISE);
+  EXPECT_TRUE (identical (
+      *pcl::tda::regionLabelledCloud (pcl::tda::generateTabletopScene (moderate)),
+      cloud));
+
+  // -colour-noise also sets the colour noise of the unpainted scene.
+  const std::string tabletop = folder.path() + "/tabletop.pcd";
+  ASSERT_EQ (0, runTool ("tabletop " + tabletop + " -seed 2 -colour-noise 0"));
+  ASSERT_EQ (0, pcl::io::loadPCDFile (tabletop, cloud));
+  TabletopParameters plain;
+  plain.seed = 2;
+  plain.colour_noise = 0.0f;
+  EXPECT_TRUE (identical (*pcl::tda::generateTabletopScene (plain).cloud, cloud));
+
+  // Depth camera frames: organized, the table kept, labelled by region.
+  const std::string frame = folder.path() + "/frame.pcd";
+  ASSERT_EQ (0,
+             runTool ("depth-regions " + frame +
+                      " -objects 4 -seed 3 -noise 0.002 -colour-noise 3"));
+  ASSERT_EQ (0, pcl::io::loadPCDFile (frame, cloud));
+  pcl::tda::DepthCameraParameters camera;
+  camera.colour_regions = true;
+  camera.remove_table = false;
+  camera.min_objects = camera.max_objects = 4;
+  camera.seed = 3;
+  camera.noise_coefficient = 0.002f;
+  camera.colour_noise = 3.0f;
+  const pcl::tda::DepthCameraScene depth = pcl::tda::generateDepthCameraScene (camera);
+  EXPECT_EQ (640u, cloud.width);
+  EXPECT_EQ (480u, cloud.height);
+  EXPECT_TRUE (identical (*pcl::tda::regionLabelledCloud (depth), cloud));
+  EXPECT_EQ (4u, depth.objects.size());
+  EXPECT_EQ (pcl::tda::DEPTH_BACKGROUND_LABEL, depth.regions.at (0).object_label);
 }

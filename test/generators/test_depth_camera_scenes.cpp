@@ -1,16 +1,21 @@
 // Tests of the depth camera scenes: determinism, the organized frame, labels against
 // the ground truth, noise and quantization of the depth, gaps between objects, table
-// removal and the parameter checks.
+// removal and the parameter checks; the painting in colour regions: labels, shaded
+// colours, colour differences of adjacent regions (against PCL's CIELAB conversion),
+// the colour noise and the unchanged unpainted frames.
 
 #include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/exceptions.h>
+#include <pcl/point_types_conversion.h>
 
 #include <gtest/gtest.h>
 
 #include "generators/generator_test_utils.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
@@ -20,6 +25,7 @@
 using pcl::tda::DepthCameraObject;
 using pcl::tda::DepthCameraParameters;
 using pcl::tda::DepthCameraScene;
+using pcl::tda::DepthColourRegion;
 using pcl::tda::test::identical;
 
 namespace {
@@ -60,6 +66,78 @@ meanAndDeviation (const std::vector<double>& values)
   }
   const double mean = sum / values.size();
   return {mean, std::sqrt (std::max (sum2 / values.size() - mean * mean, 0.0))};
+}
+
+/** A small frame painted in colour regions, the table kept. */
+DepthCameraScene
+paintedScene (std::uint64_t seed, float colour_noise = 0.0f)
+{
+  DepthCameraParameters p = smallCamera (seed);
+  p.colour_regions = true;
+  p.remove_table = false;
+  p.colour_noise = colour_noise;
+  return pcl::tda::generateDepthCameraScene (p);
+}
+
+/** FNV-1a hash of the coordinates, colour and label of every point. */
+std::uint64_t
+fingerprint (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud)
+{
+  std::uint64_t hash = 14695981039346656037ULL;
+  for (const auto& point : cloud) {
+    unsigned char bytes[20];
+    std::memcpy (bytes, &point.x, 4);
+    std::memcpy (bytes + 4, &point.y, 4);
+    std::memcpy (bytes + 8, &point.z, 4);
+    std::memcpy (bytes + 12, &point.rgba, 4);
+    std::memcpy (bytes + 16, &point.label, 4);
+    for (const unsigned char byte : bytes) {
+      hash ^= byte;
+      hash *= 1099511628211ULL;
+    }
+  }
+  return hash;
+}
+
+/** The CIE76 colour difference, by PCL's conversion to CIELAB. */
+double
+deltaE (const DepthColourRegion& a, const DepthColourRegion& b)
+{
+  pcl::PointXYZRGB rgb;
+  pcl::PointXYZLAB lab_a, lab_b;
+  rgb.r = a.r;
+  rgb.g = a.g;
+  rgb.b = a.b;
+  pcl::PointXYZRGBtoXYZLAB (rgb, lab_a);
+  rgb.r = b.r;
+  rgb.g = b.g;
+  rgb.b = b.b;
+  pcl::PointXYZRGBtoXYZLAB (rgb, lab_b);
+  return std::sqrt ((lab_a.L - lab_b.L) * (lab_a.L - lab_b.L) +
+                    (lab_a.a - lab_b.a) * (lab_a.a - lab_b.a) +
+                    (lab_a.b - lab_b.b) * (lab_a.b - lab_b.b));
+}
+
+/** The pairs (a, b), a < b, of region labels of neighbouring pixels (4-connected)
+ * whose points are at most 1 cm apart. */
+std::set<std::pair<std::uint32_t, std::uint32_t>>
+adjacentRegions (const DepthCameraScene& scene)
+{
+  const auto& cloud = *scene.cloud;
+  std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t v = 0; v < cloud.height; ++v)
+    for (std::size_t u = 0; u < cloud.width; ++u) {
+      const std::size_t i = v * cloud.width + u;
+      for (const std::size_t j : {i + 1, i + cloud.width}) {
+        if ((j == i + 1 && u + 1 == cloud.width) || j >= cloud.size())
+          continue;
+        const std::uint32_t a = scene.region_labels[i], b = scene.region_labels[j];
+        if (a != 0 && b != 0 && a != b &&
+            (cloud[i].getVector3fMap() - cloud[j].getVector3fMap()).norm() <= 0.01f)
+          pairs.emplace (std::min (a, b), std::max (a, b));
+      }
+    }
+  return pairs;
 }
 
 } // namespace
@@ -321,6 +399,8 @@ TEST (DepthCameraScenes, InvalidParametersThrow)
       [] (DepthCameraParameters& p) { p.disparity_step = std::nanf (""); },
       [] (DepthCameraParameters& p) { p.grazing_start_deg = 89.0f; },
       [] (DepthCameraParameters& p) { p.grazing_full_deg = 95.0f; },
+      [] (DepthCameraParameters& p) { p.colour_noise = -1.0f; },
+      [] (DepthCameraParameters& p) { p.colour_noise = std::nanf (""); },
       // No layout: eight objects, each 30 cm from the others, in a 10 cm disc.
       [] (DepthCameraParameters& p) {
         p.min_objects = p.max_objects = 8;
@@ -335,4 +415,227 @@ TEST (DepthCameraScenes, InvalidParametersThrow)
     EXPECT_THROW (pcl::tda::generateDepthCameraScene (p), pcl::BadArgumentException)
         << "case " << i;
   }
+}
+
+TEST (DepthCameraScenes, UnpaintedFramesAreThoseOfTheGeneratorBeforeColourRegions)
+{
+  // Fingerprint of this frame made by the generator before colour regions existed.
+  DepthCameraParameters p = smallCamera (3);
+  p.remove_table = false;
+  const DepthCameraScene scene = pcl::tda::generateDepthCameraScene (p);
+  EXPECT_EQ (0xebc0d7179031f2baULL, fingerprint (*scene.cloud));
+  // The table is region 1, every object one region.
+  ASSERT_EQ (scene.cloud->size(), scene.region_labels.size());
+  ASSERT_EQ (scene.objects.size() + 1, scene.regions.size());
+  EXPECT_EQ (pcl::tda::DEPTH_BACKGROUND_LABEL, scene.regions[0].object_label);
+  EXPECT_EQ (scene.num_table_points, scene.regions[0].num_points);
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    EXPECT_EQ (scene.objects[k].label, scene.regions[k + 1].object_label);
+    EXPECT_EQ (k + 2, scene.regions[k + 1].label);
+  }
+  for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+    const auto& point = (*scene.cloud)[i];
+    const std::uint32_t expected = !std::isfinite (point.x) ? 0u
+                                   : point.label == pcl::tda::DEPTH_BACKGROUND_LABEL
+                                       ? 1u
+                                       : point.label + 1;
+    ASSERT_EQ (expected, scene.region_labels[i]);
+  }
+  EXPECT_TRUE (scene.similar_regions.empty());
+  // Without the table, the objects are regions 1..
+  p.remove_table = true;
+  const DepthCameraScene removed = pcl::tda::generateDepthCameraScene (p);
+  ASSERT_EQ (scene.objects.size(), removed.regions.size());
+  for (std::size_t i = 0; i < removed.cloud->size(); ++i)
+    ASSERT_EQ ((*removed.cloud)[i].label, removed.region_labels[i]);
+}
+
+TEST (DepthCameraScenes, PaintingAndColourNoiseChangeOnlyTheColours)
+{
+  const DepthCameraScene a = paintedScene (7, 5.0f);
+  const DepthCameraScene b = paintedScene (7, 5.0f);
+  const DepthCameraScene c = paintedScene (8, 5.0f);
+  EXPECT_TRUE (identical (*a.cloud, *b.cloud));
+  EXPECT_EQ (a.region_labels, b.region_labels);
+  EXPECT_EQ (a.similar_regions, b.similar_regions);
+  EXPECT_FALSE (identical (*a.cloud, *c.cloud));
+  DepthCameraParameters p = smallCamera (7);
+  p.remove_table = false;
+  const DepthCameraScene plain = pcl::tda::generateDepthCameraScene (p);
+  ASSERT_EQ (plain.cloud->size(), a.cloud->size());
+  std::size_t recoloured = 0;
+  for (std::size_t i = 0; i < a.cloud->size(); ++i) {
+    const auto& painted = (*a.cloud)[i];
+    const auto& unpainted = (*plain.cloud)[i];
+    ASSERT_EQ (0, std::memcmp (painted.data, unpainted.data, 3 * sizeof (float)));
+    ASSERT_EQ (painted.label, unpainted.label);
+    recoloured += painted.rgba != unpainted.rgba;
+  }
+  EXPECT_GT (recoloured, a.cloud->size() / 10);
+}
+
+TEST (DepthCameraScenes, ColourRegionLabelsAreContiguousAndCarryTheirShadedColours)
+{
+  std::set<std::pair<pcl::tda::DepthObjectKind, std::uint32_t>> parts_seen;
+  for (std::uint64_t seed = 0; seed < 12; ++seed) {
+    SCOPED_TRACE ("seed " + std::to_string (seed));
+    const DepthCameraScene scene = paintedScene (seed);
+    ASSERT_EQ (scene.cloud->size(), scene.region_labels.size());
+    const std::size_t count = scene.regions.size();
+    for (std::size_t i = 0; i < count; ++i)
+      ASSERT_EQ (i + 1, scene.regions[i].label);
+    ASSERT_GT (count, scene.objects.size() + 1);
+    EXPECT_EQ (pcl::tda::DEPTH_BACKGROUND_LABEL, scene.regions[0].object_label);
+    std::vector<std::size_t> points (count, 0);
+    for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+      const auto& point = (*scene.cloud)[i];
+      const std::uint32_t label = scene.region_labels[i];
+      if (!std::isfinite (point.x)) {
+        ASSERT_EQ (0u, label);
+        continue;
+      }
+      ASSERT_GE (label, 1u);
+      ASSERT_LE (label, count);
+      ++points[label - 1];
+      const DepthColourRegion& region = scene.regions[label - 1];
+      ASSERT_EQ (region.object_label, point.label);
+      // Shaded: the region's colour times one factor in [0.35, 1], rounded.
+      const std::array<double, 3> base = {
+          double (region.r), double (region.g), double (region.b)};
+      const std::array<double, 3> seen = {
+          double (point.r), double (point.g), double (point.b)};
+      const std::size_t brightest =
+          std::max_element (base.begin(), base.end()) - base.begin();
+      ASSERT_GT (base[brightest], 0.0);
+      const double factor = seen[brightest] / base[brightest];
+      ASSERT_GE (factor, 0.35 - 0.5 / base[brightest]);
+      ASSERT_LE (factor, 1.0 + 1e-9);
+      for (std::size_t c = 0; c < 3; ++c)
+        ASSERT_NEAR (base[c] * factor, seen[c], 1.0 + 1e-9);
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      EXPECT_GT (points[i], 0u);
+      EXPECT_EQ (points[i], scene.regions[i].num_points);
+      if (i > 0) {
+        parts_seen.emplace (scene.objects[scene.regions[i].object_label - 1].kind,
+                            scene.regions[i].part);
+      }
+    }
+    // The cloud labelled by region.
+    const auto labelled = pcl::tda::regionLabelledCloud (scene);
+    ASSERT_EQ (scene.cloud->size(), labelled->size());
+    EXPECT_TRUE (labelled->isOrganized());
+    for (std::size_t i = 0; i < labelled->size(); ++i)
+      ASSERT_EQ (scene.region_labels[i], (*labelled)[i].label);
+  }
+  // Every part of every kind is seen somewhere, and no other part.
+  using Kind = pcl::tda::DepthObjectKind;
+  const std::set<std::pair<Kind, std::uint32_t>> expected = {{Kind::BOWL, 0},
+                                                             {Kind::BOWL, 1},
+                                                             {Kind::CONE, 0},
+                                                             {Kind::CONE, 1},
+                                                             {Kind::RING, 0},
+                                                             {Kind::RING, 1},
+                                                             {Kind::L_BLOCK, 0},
+                                                             {Kind::L_BLOCK, 1},
+                                                             {Kind::CAPSULE, 0},
+                                                             {Kind::CAPSULE, 1},
+                                                             {Kind::CAPSULE, 2}};
+  EXPECT_EQ (expected, parts_seen);
+}
+
+TEST (DepthCameraScenes, AdjacentRegionsHaveTheDocumentedColourDifferences)
+{
+  std::size_t subtle = 0, painted = 0, similar_adjacent = 0, similar = 0;
+  for (std::uint64_t seed = 0; seed < 16; ++seed) {
+    SCOPED_TRACE ("seed " + std::to_string (seed));
+    const DepthCameraScene scene = paintedScene (seed, 4.0f);
+    const std::set<std::pair<std::uint32_t, std::uint32_t>> similar_pairs (
+        scene.similar_regions.begin(), scene.similar_regions.end());
+    std::set<std::uint32_t> subtle_objects;
+    for (const auto& [a, b] : scene.similar_regions) {
+      const DepthColourRegion& ra = scene.regions[a - 1];
+      const DepthColourRegion& rb = scene.regions[b - 1];
+      EXPECT_EQ (ra.object_label, rb.object_label);
+      EXPECT_NE (pcl::tda::DEPTH_BACKGROUND_LABEL, ra.object_label);
+      EXPECT_GE (deltaE (ra, rb), pcl::tda::DEPTH_SUBTLE_MIN_DELTA_E);
+      EXPECT_LE (deltaE (ra, rb), pcl::tda::DEPTH_SUBTLE_MAX_DELTA_E);
+      subtle_objects.insert (ra.object_label);
+    }
+    similar += similar_pairs.size();
+    subtle += subtle_objects.size();
+    painted += scene.objects.size();
+    for (const auto& [a, b] : adjacentRegions (scene)) {
+      const DepthColourRegion& ra = scene.regions[a - 1];
+      const DepthColourRegion& rb = scene.regions[b - 1];
+      const double difference = deltaE (ra, rb);
+      SCOPED_TRACE ("regions " + std::to_string (a) + " and " + std::to_string (b));
+      if (similar_pairs.count ({a, b}) != 0) {
+        ++similar_adjacent;
+      }
+      else if (ra.object_label == pcl::tda::DEPTH_BACKGROUND_LABEL) {
+        EXPECT_GE (difference, pcl::tda::DEPTH_TABLE_MIN_DELTA_E);
+      }
+      else if (ra.object_label == rb.object_label) {
+        EXPECT_GE (difference, pcl::tda::DEPTH_CONTRAST_MIN_DELTA_E);
+      }
+      else {
+        EXPECT_GE (difference, pcl::tda::DEPTH_OBJECTS_MIN_DELTA_E);
+      }
+    }
+    // Regions of different objects differ, whether adjacent or not, and every
+    // object region differs from the table.
+    for (const DepthColourRegion& ra : scene.regions)
+      for (const DepthColourRegion& rb : scene.regions)
+        if (ra.label < rb.label && ra.object_label != rb.object_label) {
+          EXPECT_GE (deltaE (ra, rb),
+                     ra.object_label == pcl::tda::DEPTH_BACKGROUND_LABEL
+                         ? pcl::tda::DEPTH_TABLE_MIN_DELTA_E
+                         : pcl::tda::DEPTH_OBJECTS_MIN_DELTA_E);
+        }
+  }
+  // About half of the objects are subtle; most subtle pairs touch in the image.
+  EXPECT_GT (subtle, painted / 4);
+  EXPECT_LT (subtle, painted * 3 / 4);
+  EXPECT_GE (similar_adjacent, similar * 3 / 4);
+}
+
+TEST (DepthCameraScenes, ColourNoiseIsABrightnessPlusAChannelOffset)
+{
+  const DepthCameraScene clean = paintedScene (2);
+  const float sigma = 6.0f;
+  const DepthCameraScene noisy = paintedScene (2, sigma);
+  std::array<std::vector<double>, 3> offsets;
+  for (std::size_t i = 0; i < clean.cloud->size(); ++i) {
+    const auto& a = (*clean.cloud)[i];
+    const auto& b = (*noisy.cloud)[i];
+    if (!std::isfinite (a.x))
+      continue;
+    const std::array<int, 3> before = {a.r, a.g, a.b}, after = {b.r, b.g, b.b};
+    for (std::size_t c = 0; c < 3; ++c) {
+      // Within 4 + 2 standard deviations, rounded.
+      ASSERT_LE (std::abs (after[c] - before[c]), 6.0 * sigma + 1.0);
+      if (before[c] > 40 && before[c] < 215) // far from clamping
+        offsets[c].push_back (after[c] - before[c]);
+    }
+  }
+  ASSERT_GT (offsets[0].size(), 5000u);
+  // Each channel: variance sigma^2 (brightness) + (sigma / 2)^2 (its own).
+  for (std::size_t c = 0; c < 3; ++c) {
+    const auto [mean, deviation] = meanAndDeviation (offsets[c]);
+    EXPECT_NEAR (0.0, mean, 0.2);
+    EXPECT_NEAR (sigma * std::sqrt (1.25), deviation, 0.05 * sigma);
+  }
+  // The channels are correlated by the common brightness: the difference of two
+  // channels has only the channel offsets, variance 2 (sigma / 2)^2.
+  std::vector<double> differences;
+  for (std::size_t i = 0; i < clean.cloud->size(); ++i) {
+    const auto& a = (*clean.cloud)[i];
+    const auto& b = (*noisy.cloud)[i];
+    if (std::isfinite (a.x) && a.r > 40 && a.r < 215 && a.g > 40 && a.g < 215)
+      differences.push_back ((b.r - a.r) - (b.g - a.g));
+  }
+  ASSERT_GT (differences.size(), 5000u);
+  EXPECT_NEAR (
+      sigma * std::sqrt (0.5), meanAndDeviation (differences).second, 0.08 * sigma);
 }

@@ -1,8 +1,11 @@
 // Tests of the tabletop scenes: determinism, labels and counts against the ground
-// truth, geometry, gaps, colours, visibility, dropout and recoverability.
+// truth, geometry, gaps, colours, visibility, dropout and recoverability; the
+// painting in colour regions: labels, colours, colour differences of adjacent
+// regions (against PCL's CIELAB conversion) and the unchanged unpainted scenes.
 
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/exceptions.h>
+#include <pcl/point_types_conversion.h>
 
 #include <gtest/gtest.h>
 
@@ -13,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <functional>
 #include <limits>
 #include <map>
@@ -22,6 +26,7 @@
 #include <vector>
 
 using pcl::tda::PrimitiveType;
+using pcl::tda::TabletopColourRegion;
 using pcl::tda::TabletopObject;
 using pcl::tda::TabletopParameters;
 using pcl::tda::TabletopScene;
@@ -151,6 +156,93 @@ euclideanClusters (const std::vector<Eigen::Vector3f>& points, float tolerance)
   for (std::size_t i = 0; i < points.size(); ++i)
     roots[i] = find (i);
   return roots;
+}
+
+/** A scene painted in colour regions. */
+TabletopScene
+regionScene (std::size_t objects,
+             std::uint64_t seed,
+             const pcl::tda::TabletopNoise& noise = pcl::tda::TABLETOP_NO_NOISE)
+{
+  TabletopParameters p;
+  p.num_objects = objects;
+  p.seed = seed;
+  p.colour_regions = true;
+  p.setNoise (noise);
+  return pcl::tda::generateTabletopScene (p);
+}
+
+/** The colour of a point, object or region. */
+template <typename Coloured>
+std::array<int, 3>
+colourOf (const Coloured& x)
+{
+  return {x.r, x.g, x.b};
+}
+
+/** FNV-1a hash of the coordinates, colour and label of every point. */
+std::uint64_t
+fingerprint (const Cloud& cloud)
+{
+  std::uint64_t hash = 14695981039346656037ULL;
+  for (const auto& point : cloud) {
+    unsigned char bytes[20];
+    std::memcpy (bytes, &point.x, 4);
+    std::memcpy (bytes + 4, &point.y, 4);
+    std::memcpy (bytes + 8, &point.z, 4);
+    std::memcpy (bytes + 12, &point.rgba, 4);
+    std::memcpy (bytes + 16, &point.label, 4);
+    for (const unsigned char byte : bytes) {
+      hash ^= byte;
+      hash *= 1099511628211ULL;
+    }
+  }
+  return hash;
+}
+
+/** The CIE76 colour difference, by PCL's conversion to CIELAB. */
+double
+deltaE (const TabletopColourRegion& a, const TabletopColourRegion& b)
+{
+  pcl::PointXYZRGB rgb;
+  pcl::PointXYZLAB lab_a, lab_b;
+  rgb.r = a.r;
+  rgb.g = a.g;
+  rgb.b = a.b;
+  pcl::PointXYZRGBtoXYZLAB (rgb, lab_a);
+  rgb.r = b.r;
+  rgb.g = b.g;
+  rgb.b = b.b;
+  pcl::PointXYZRGBtoXYZLAB (rgb, lab_b);
+  return std::sqrt ((lab_a.L - lab_b.L) * (lab_a.L - lab_b.L) +
+                    (lab_a.a - lab_b.a) * (lab_a.a - lab_b.a) +
+                    (lab_a.b - lab_b.b) * (lab_a.b - lab_b.b));
+}
+
+/** The pairs (a, b), a < b, of region labels with points at most \a distance
+ * apart. */
+std::set<std::pair<std::uint32_t, std::uint32_t>>
+adjacentRegions (const TabletopScene& scene, float distance)
+{
+  const Cloud& cloud = *scene.cloud;
+  std::vector<std::size_t> order (cloud.size());
+  std::iota (order.begin(), order.end(), 0);
+  std::sort (order.begin(), order.end(), [&] (std::size_t a, std::size_t b) {
+    return cloud[a].x < cloud[b].x;
+  });
+  std::set<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  for (std::size_t i = 0; i < order.size(); ++i)
+    for (std::size_t j = i + 1;
+         j < order.size() && cloud[order[j]].x - cloud[order[i]].x <= distance;
+         ++j) {
+      const std::uint32_t a = scene.region_labels[order[i]];
+      const std::uint32_t b = scene.region_labels[order[j]];
+      if (a != b &&
+          (cloud[order[i]].getVector3fMap() - cloud[order[j]].getVector3fMap())
+                  .norm() <= distance)
+        pairs.emplace (std::min (a, b), std::max (a, b));
+    }
+  return pairs;
 }
 
 } // namespace
@@ -399,4 +491,251 @@ TEST (TabletopScene, BadParametersThrow)
     p.table_width = 0.4f;
     p.table_depth = 0.3f;
   });
+}
+
+TEST (TabletopScene, UnpaintedScenesAreThoseOfTheGeneratorBeforeColourRegions)
+{
+  // Fingerprint of this scene made by the generator before colour regions existed.
+  TabletopParameters p;
+  p.num_objects = 6;
+  p.noise_sigma = 0.002f;
+  p.seed = 3;
+  const TabletopScene scene = pcl::tda::generateTabletopScene (p);
+  EXPECT_EQ (0xd8d98c5fcd1e8d58ULL, fingerprint (*scene.cloud));
+  // Every object is one region, labelled as in the cloud.
+  ASSERT_EQ (scene.cloud->size(), scene.region_labels.size());
+  for (std::size_t i = 0; i < scene.cloud->size(); ++i)
+    ASSERT_EQ ((*scene.cloud)[i].label, scene.region_labels[i]);
+  ASSERT_EQ (scene.objects.size() + 1, scene.regions.size());
+  EXPECT_EQ (pcl::tda::TABLE_LABEL, scene.regions[0].object_label);
+  EXPECT_EQ (scene.num_table_points, scene.regions[0].num_points);
+  for (std::size_t k = 0; k < scene.objects.size(); ++k) {
+    const TabletopColourRegion& region = scene.regions[k + 1];
+    const TabletopObject& object = scene.objects[k];
+    EXPECT_EQ (object.label, region.label);
+    EXPECT_EQ (object.label, region.object_label);
+    EXPECT_EQ (0u, region.part);
+    EXPECT_EQ (colourOf (object), colourOf (region));
+    EXPECT_EQ (object.num_points, region.num_points);
+  }
+  EXPECT_TRUE (scene.similar_regions.empty());
+  EXPECT_TRUE (identical (*scene.cloud, *pcl::tda::regionLabelledCloud (scene)));
+}
+
+TEST (TabletopScene, NoisePresetsSetTheDepthAndColourNoise)
+{
+  TabletopParameters p;
+  p.setNoise (pcl::tda::TABLETOP_NO_NOISE);
+  EXPECT_EQ (0.0f, p.noise_sigma);
+  EXPECT_EQ (0.0f, p.colour_noise);
+  p.setNoise (pcl::tda::TABLETOP_MODERATE_NOISE);
+  EXPECT_EQ (0.0005f, p.noise_sigma);
+  EXPECT_EQ (4.0f, p.colour_noise);
+  p.setNoise (pcl::tda::TABLETOP_HEAVY_NOISE);
+  EXPECT_EQ (0.0015f, p.noise_sigma);
+  EXPECT_EQ (8.0f, p.colour_noise);
+  EXPECT_STREQ ("heavy", pcl::tda::TABLETOP_HEAVY_NOISE.name);
+}
+
+TEST (TabletopScene, ColourRegionsAreDeterministicAndChangeOnlyTheColours)
+{
+  const TabletopScene a = regionScene (6, 21, pcl::tda::TABLETOP_MODERATE_NOISE);
+  const TabletopScene b = regionScene (6, 21, pcl::tda::TABLETOP_MODERATE_NOISE);
+  const TabletopScene c = regionScene (6, 22, pcl::tda::TABLETOP_MODERATE_NOISE);
+  EXPECT_TRUE (identical (*a.cloud, *b.cloud));
+  EXPECT_EQ (a.region_labels, b.region_labels);
+  EXPECT_EQ (a.similar_regions, b.similar_regions);
+  EXPECT_FALSE (identical (*a.cloud, *c.cloud));
+  // The same scene unpainted: the same points, object labels and depth noise.
+  TabletopParameters p;
+  p.num_objects = 6;
+  p.seed = 21;
+  p.setNoise (pcl::tda::TABLETOP_MODERATE_NOISE);
+  const TabletopScene plain = pcl::tda::generateTabletopScene (p);
+  ASSERT_EQ (plain.cloud->size(), a.cloud->size());
+  std::size_t recoloured = 0;
+  for (std::size_t i = 0; i < a.cloud->size(); ++i) {
+    const auto& painted = (*a.cloud)[i];
+    const auto& unpainted = (*plain.cloud)[i];
+    ASSERT_EQ (0, std::memcmp (painted.data, unpainted.data, 3 * sizeof (float)));
+    ASSERT_EQ (painted.label, unpainted.label);
+    recoloured += painted.rgba != unpainted.rgba;
+  }
+  EXPECT_GT (recoloured, a.cloud->size() / 10);
+}
+
+TEST (TabletopScene, ColourRegionLabelsAreContiguousAndCarryTheirColours)
+{
+  for (std::uint64_t seed = 0; seed < 6; ++seed) {
+    SCOPED_TRACE ("seed " + std::to_string (seed));
+    const TabletopScene scene = regionScene (pcl::tda::MAX_TABLETOP_OBJECTS, seed);
+    ASSERT_EQ (scene.cloud->size(), scene.region_labels.size());
+    const std::size_t count = scene.regions.size();
+    ASSERT_GT (count, scene.objects.size() + 1);
+    for (std::size_t i = 0; i < count; ++i)
+      ASSERT_EQ (i + 1, scene.regions[i].label);
+    const TabletopColourRegion& table = scene.regions[0];
+    EXPECT_EQ (pcl::tda::TABLE_LABEL, table.label);
+    EXPECT_EQ (pcl::tda::TABLE_LABEL, table.object_label);
+    EXPECT_EQ ((std::array<int, 3>{scene.table_r, scene.table_g, scene.table_b}),
+               colourOf (table));
+    // Without noise every point has its region's colour; each region is on one
+    // object, and each object has several regions with distinct parts.
+    std::vector<std::size_t> points (count, 0);
+    std::map<std::uint32_t, std::set<std::uint32_t>> parts_of_object;
+    for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+      const std::uint32_t label = scene.region_labels[i];
+      ASSERT_GE (label, 1u);
+      ASSERT_LE (label, count);
+      const TabletopColourRegion& region = scene.regions[label - 1];
+      const auto& point = (*scene.cloud)[i];
+      ASSERT_EQ (region.object_label, point.label);
+      ASSERT_EQ (colourOf (region), colourOf (point));
+      ++points[label - 1];
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+      EXPECT_GT (points[i], 0u);
+      EXPECT_EQ (points[i], scene.regions[i].num_points);
+      const TabletopColourRegion& region = scene.regions[i];
+      if (i > 0) {
+        EXPECT_TRUE (parts_of_object[region.object_label].insert (region.part).second);
+      }
+    }
+    for (const TabletopObject& object : scene.objects) {
+      const std::set<std::uint32_t>& parts = parts_of_object[object.label];
+      EXPECT_GE (parts.size(), 2u);
+      const std::uint32_t most = object.type == PrimitiveType::BOX        ? 4
+                                 : object.type == PrimitiveType::CYLINDER ? 3
+                                                                          : 2;
+      EXPECT_LE (*parts.rbegin(), most);
+    }
+    // The cloud labelled by region.
+    const Cloud::Ptr labelled = pcl::tda::regionLabelledCloud (scene);
+    ASSERT_EQ (scene.cloud->size(), labelled->size());
+    for (std::size_t i = 0; i < labelled->size(); ++i) {
+      ASSERT_EQ (scene.region_labels[i], (*labelled)[i].label);
+      ASSERT_EQ ((*scene.cloud)[i].rgba, (*labelled)[i].rgba);
+    }
+  }
+}
+
+TEST (TabletopScene, PaintedPartsFollowTheGeometry)
+{
+  for (std::uint64_t seed = 0; seed < 6; ++seed) {
+    SCOPED_TRACE ("seed " + std::to_string (seed));
+    const TabletopScene scene = regionScene (pcl::tda::MAX_TABLETOP_OBJECTS, seed);
+    std::map<std::uint32_t, std::vector<double>> heights; // cylinder band heights
+    std::map<std::uint32_t, std::uint32_t> last_part;     // of each object
+    for (const TabletopColourRegion& region : scene.regions)
+      last_part[region.object_label] =
+          std::max (last_part[region.object_label], region.part);
+    for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+      const auto& point = (*scene.cloud)[i];
+      if (point.label == pcl::tda::TABLE_LABEL)
+        continue;
+      const TabletopObject& object =
+          scene.objects[point.label - pcl::tda::FIRST_OBJECT_LABEL];
+      const TabletopColourRegion& region = scene.regions[scene.region_labels[i] - 1];
+      const Eigen::Vector3d local = toObjectFrame (object, point);
+      const Eigen::Vector3d half = 0.5 * object.dimensions.cast<double>();
+      if (object.type == PrimitiveType::BOX) {
+        // Top, -y, +y, -x, +x in the box's frame.
+        const std::array<std::pair<int, double>, 5> faces = {{{2, half.z()},
+                                                              {1, -half.y()},
+                                                              {1, half.y()},
+                                                              {0, -half.x()},
+                                                              {0, half.x()}}};
+        ASSERT_LT (region.part, faces.size());
+        const auto& [axis, side] = faces[region.part];
+        ASSERT_NEAR (side, local[axis], 1e-5);
+      }
+      else if (object.type == PrimitiveType::CYLINDER) {
+        // The top part is the cap, the others are bands of the side.
+        if (region.part == last_part[object.label]) {
+          ASSERT_NEAR (half.z(), local.z(), 1e-5);
+        }
+        else {
+          ASSERT_NEAR (half.x(), local.head<2>().norm(), 1e-5);
+          heights[scene.region_labels[i]].push_back (point.z);
+        }
+      }
+    }
+    // The bands of a cylinder are stacked: each band is above the one below.
+    for (const auto& [label, band] : heights) {
+      const TabletopColourRegion& region = scene.regions[label - 1];
+      if (region.part == 0)
+        continue;
+      const auto below = std::find_if (
+          scene.regions.begin(), scene.regions.end(), [&] (const auto& other) {
+            return other.object_label == region.object_label &&
+                   other.part == region.part - 1;
+          });
+      if (below == scene.regions.end() || heights.count (below->label) == 0)
+        continue;
+      EXPECT_GE (*std::min_element (band.begin(), band.end()),
+                 *std::max_element (heights[below->label].begin(),
+                                    heights[below->label].end()));
+    }
+  }
+}
+
+TEST (TabletopScene, AdjacentRegionsHaveTheDocumentedColourDifferences)
+{
+  std::size_t similar = 0, similar_adjacent = 0, objects = 0, objects_with_similar = 0;
+  for (std::uint64_t seed = 0; seed < 8; ++seed) {
+    SCOPED_TRACE ("seed " + std::to_string (seed));
+    const TabletopScene scene = regionScene (6, seed, pcl::tda::TABLETOP_HEAVY_NOISE);
+    const TabletopParameters defaults;
+    const std::set<std::pair<std::uint32_t, std::uint32_t>> similar_pairs (
+        scene.similar_regions.begin(), scene.similar_regions.end());
+    EXPECT_EQ (similar_pairs.size(), scene.similar_regions.size());
+    std::set<std::uint32_t> with_similar;
+    for (const auto& [a, b] : scene.similar_regions) {
+      ASSERT_LT (a, b);
+      ASSERT_LE (b, scene.regions.size());
+      const TabletopColourRegion& ra = scene.regions[a - 1];
+      const TabletopColourRegion& rb = scene.regions[b - 1];
+      EXPECT_EQ (ra.object_label, rb.object_label);
+      EXPECT_NE (pcl::tda::TABLE_LABEL, ra.object_label);
+      const double difference = deltaE (ra, rb);
+      EXPECT_GE (difference, pcl::tda::SIMILAR_REGION_MIN_DELTA_E);
+      EXPECT_LE (difference, pcl::tda::SIMILAR_REGION_MAX_DELTA_E);
+      with_similar.insert (ra.object_label);
+    }
+    similar += scene.similar_regions.size();
+    objects += scene.objects.size();
+    objects_with_similar += with_similar.size();
+    // Adjacent regions: points within twice the point spacing.
+    for (const auto& [a, b] : adjacentRegions (scene, 2.0f * defaults.point_spacing)) {
+      const TabletopColourRegion& ra = scene.regions[a - 1];
+      const TabletopColourRegion& rb = scene.regions[b - 1];
+      const double difference = deltaE (ra, rb);
+      SCOPED_TRACE ("regions " + std::to_string (a) + " and " + std::to_string (b));
+      EXPECT_GE (difference, pcl::tda::SIMILAR_REGION_MIN_DELTA_E);
+      if (similar_pairs.count ({a, b}) != 0) {
+        ++similar_adjacent;
+      }
+      else if (ra.object_label == rb.object_label ||
+               ra.object_label == pcl::tda::TABLE_LABEL) {
+        EXPECT_GE (difference, pcl::tda::DISTINCT_REGION_MIN_DELTA_E);
+      }
+    }
+    // Regions of different objects differ too.
+    for (const TabletopColourRegion& ra : scene.regions)
+      for (const TabletopColourRegion& rb : scene.regions)
+        if (ra.label < rb.label && ra.object_label != rb.object_label) {
+          EXPECT_GE (deltaE (ra, rb), pcl::tda::SIMILAR_REGION_MIN_DELTA_E);
+        }
+    // The colour noise stays within 3 standard deviations (24 levels).
+    for (std::size_t i = 0; i < scene.cloud->size(); ++i) {
+      const std::array<int, 3> noisy = colourOf ((*scene.cloud)[i]);
+      const std::array<int, 3> base =
+          colourOf (scene.regions[scene.region_labels[i] - 1]);
+      for (std::size_t c = 0; c < 3; ++c)
+        ASSERT_LE (std::abs (noisy[c] - base[c]), 24);
+    }
+  }
+  EXPECT_GE (similar, objects * 3 / 4);
+  EXPECT_GE (objects_with_similar, objects * 9 / 10);
+  EXPECT_GE (similar_adjacent, similar * 9 / 10);
 }

@@ -2,6 +2,7 @@
 #include <pcl/tda/generators/parameter_checks.h>
 #include <pcl/tda/generators/random_sampling.h>
 #include <pcl/exceptions.h>
+#include <pcl/point_types_conversion.h>
 
 #include <algorithm>
 #include <array>
@@ -55,6 +56,28 @@ const std::array<Colour, MAX_DEPTH_CAMERA_OBJECTS> OBJECT_PALETTE = {{{200, 60, 
                                                                       {40, 170, 170},
                                                                       {230, 120, 40},
                                                                       {90, 90, 90}}};
+
+/** Colour regions: the bounds of DepthCameraParameters::colour_regions with
+ * margins, so that other conversions to CIELAB agree. */
+constexpr double SUBTLE_LOW = DEPTH_SUBTLE_MIN_DELTA_E + 0.5;
+constexpr double SUBTLE_HIGH = DEPTH_SUBTLE_MAX_DELTA_E - 0.5;
+constexpr double CONTRAST_LOW = DEPTH_CONTRAST_MIN_DELTA_E + 1.0;
+constexpr double TABLE_CONTRAST = DEPTH_TABLE_MIN_DELTA_E + 1.0;
+constexpr double OBJECTS_CONTRAST = DEPTH_OBJECTS_MIN_DELTA_E + 0.5;
+/** Probability that an object's tones are subtle. */
+constexpr double SUBTLE_PROBABILITY = 0.5;
+/** Largest change of a channel from the first tone to a subtle second tone. */
+constexpr int SUBTLE_STEP = 32;
+/** The cone's regions meet at this fraction of its height, drawn uniformly. */
+constexpr double CONE_MIN_SPLIT = 0.35, CONE_MAX_SPLIT = 0.65;
+/** Tolerance of the boundary between the L-shaped block's base and upright, and of
+ * the bowl's rim, in metres (hits are within HIT_EPSILON of the surface). */
+constexpr double PART_TOLERANCE = 1e-4;
+constexpr int MAX_TONE_DRAWS = 20000;
+/** Offsets of the seeds of the painting's and the colour noise's random generators
+ * from the scene's seed. */
+constexpr std::uint64_t PAINT_SEED_OFFSET = 0x2545f4914f6cdd1dULL;
+constexpr std::uint64_t COLOUR_NOISE_SEED_OFFSET = 0x94d049bb133111ebULL;
 
 // Footprints (outlines seen from above): a convex core (one point, a segment, or a
 // rectangle counter-clockwise) grown by a radius, with exact distances.
@@ -538,6 +561,7 @@ checkDepthCameraParameters (const DepthCameraParameters& p)
   checkNonNegative (p.noise_coefficient, name, "noise coefficient");
   checkLength (p.baseline, name, "baseline");
   checkNonNegative (p.disparity_step, name, "disparity step");
+  checkNonNegative (p.colour_noise, name, "colour noise");
   require (p.grazing_start_deg >= 0.0f && p.grazing_start_deg <= p.grazing_full_deg &&
                p.grazing_full_deg <= 90.0f,
            "the grazing angles must satisfy 0 <= start <= full <= 90 degrees, not "
@@ -552,6 +576,134 @@ shade (std::uint8_t value, double cos_incidence)
 {
   return static_cast<std::uint8_t> (
       std::lround (value * (AMBIENT + DIFFUSE * cos_incidence)));
+}
+
+/** The colour in CIELAB, by PCL's conversion. */
+Eigen::Vector3d
+toLab (const Colour& colour)
+{
+  pcl::PointXYZRGB rgb;
+  rgb.r = colour[0];
+  rgb.g = colour[1];
+  rgb.b = colour[2];
+  pcl::PointXYZLAB lab;
+  pcl::PointXYZRGBtoXYZLAB (rgb, lab);
+  return {lab.L, lab.a, lab.b};
+}
+
+/** The two tones of an object and where they meet. */
+struct Tones {
+  /** Number of parts (regions): 1 unpainted, 2, or 3 for a capsule. */
+  std::size_t parts = 1;
+  bool subtle = false;
+  /** Height of the boundary of a cone's regions, in metres. */
+  double split = 0.0;
+  Colour first = {0, 0, 0}, second = {0, 0, 0};
+
+  /** The colour of a part, as DepthColourRegion::part. */
+  const Colour&
+  colour (const Solid& solid, std::size_t part) const
+  {
+    if (solid.kind == DepthObjectKind::CAPSULE)
+      return part == 1 || parts == 1 ? first : second;
+    return part == 0 ? first : second;
+  }
+
+  /** The adjacent parts, (a, b) with a < b. */
+  std::vector<std::pair<std::size_t, std::size_t>>
+  adjacent () const
+  {
+    std::vector<std::pair<std::size_t, std::size_t>> pairs;
+    for (std::size_t part = 0; part + 1 < parts; ++part)
+      pairs.emplace_back (part, part + 1);
+    return pairs;
+  }
+
+  /** The part of the surface point p (world frame) with outward normal n. */
+  std::size_t
+  partOf (const Solid& solid, const Eigen::Vector3d& p, const Eigen::Vector3d& n) const
+  {
+    if (parts == 1)
+      return 0;
+    const Eigen::Vector3d local = solid.toLocal (p);
+    switch (solid.kind) {
+    case DepthObjectKind::BOWL: {
+      const double radius = solid.size.z();
+      const Eigen::Vector3d q = local - Eigen::Vector3d (0.0, 0.0, radius);
+      const bool rim = n.z() > 0.7 && q.z() > -BOWL_WALL;
+      return !rim && q.norm() < radius - 0.5 * BOWL_WALL ? 1 : 0;
+    }
+    case DepthObjectKind::CONE:
+      return local.z() >= split ? 1 : 0;
+    case DepthObjectKind::RING:
+      return local.y() >= 0.0 ? 1 : 0;
+    case DepthObjectKind::L_BLOCK:
+      return local.x() > solid.size.x() / 6.0 - PART_TOLERANCE ? 1 : 0;
+    case DepthObjectKind::CAPSULE: {
+      const double half_length = 0.5 * (solid.size.x() - solid.size.z());
+      return local.x() < -half_length ? 0 : local.x() > half_length ? 2 : 1;
+    }
+    }
+    return 0;
+  }
+};
+
+/** Paints the objects in two tones, as DepthCameraParameters::colour_regions
+ * documents; \a colours holds each object's first tone. */
+std::vector<Tones>
+paintObjects (const std::vector<Solid>& solids,
+              const std::vector<Colour>& colours,
+              std::uint64_t seed)
+{
+  PortableRandom random (seed + PAINT_SEED_OFFSET);
+  const Eigen::Vector3d table = toLab (TABLE_COLOUR);
+  std::vector<Eigen::Vector3d> painted;
+  for (const Colour& colour : colours)
+    painted.push_back (toLab (colour));
+  std::vector<Tones> tones (solids.size());
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    Tones& object = tones[k];
+    object.parts = solids[k].kind == DepthObjectKind::CAPSULE ? 3 : 2;
+    object.first = colours[k];
+    object.subtle = random.uniform() < SUBTLE_PROBABILITY;
+    if (solids[k].kind == DepthObjectKind::CONE)
+      object.split =
+          solids[k].size.z() * random.uniform (CONE_MIN_SPLIT, CONE_MAX_SPLIT);
+    const Eigen::Vector3d first = painted[k];
+    bool found = false;
+    for (int draw = 0; draw < MAX_TONE_DRAWS && !found; ++draw) {
+      for (std::size_t c = 0; c < 3; ++c) {
+        const long level =
+            object.subtle ? object.first[c] +
+                                static_cast<long> (random.index (2 * SUBTLE_STEP + 1)) -
+                                SUBTLE_STEP
+                          : static_cast<long> (random.index (256));
+        object.second[c] = static_cast<std::uint8_t> (std::clamp (level, 0L, 255L));
+      }
+      const Eigen::Vector3d lab = toLab (object.second);
+      const double difference = (lab - first).norm();
+      found = (object.subtle ? difference >= SUBTLE_LOW && difference <= SUBTLE_HIGH
+                             : difference >= CONTRAST_LOW) &&
+              (lab - table).norm() >= TABLE_CONTRAST;
+      for (std::size_t j = 0; j < painted.size() && found; ++j)
+        found = j == k || (lab - painted[j]).norm() >= OBJECTS_CONTRAST;
+      if (found)
+        painted.push_back (lab);
+    }
+    if (!found)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "generateDepthCameraScene: cannot paint object "
+                               << k << " in two tones");
+  }
+  return tones;
+}
+
+/** Adds to \a value a colour noise offset, rounded and clamped to 0-255. */
+std::uint8_t
+addColourNoise (std::uint8_t value, double offset)
+{
+  return static_cast<std::uint8_t> (
+      std::clamp (std::lround (value + offset), 0L, 255L));
 }
 
 } // namespace
@@ -627,6 +779,40 @@ generateDepthCameraScene (const DepthCameraParameters& parameters)
     scene.objects.push_back (truth);
   }
 
+  // Colour regions: one part per object unless painted. A slot is the table or a
+  // part of an object, numbered through the scene; the regions are the slots with
+  // points.
+  std::vector<Tones> tones (solids.size());
+  if (parameters.colour_regions)
+    tones =
+        paintObjects (solids,
+                      std::vector<Colour> (palette.begin(), palette.begin() + count),
+                      parameters.seed);
+  else
+    for (std::size_t k = 0; k < solids.size(); ++k)
+      tones[k].first = palette[k];
+  std::vector<DepthColourRegion> slots (1);
+  slots[0].r = TABLE_COLOUR[0];
+  slots[0].g = TABLE_COLOUR[1];
+  slots[0].b = TABLE_COLOUR[2];
+  std::vector<std::size_t> first_slot (solids.size());
+  for (std::size_t k = 0; k < solids.size(); ++k) {
+    first_slot[k] = slots.size();
+    for (std::size_t part = 0; part < tones[k].parts; ++part) {
+      DepthColourRegion slot;
+      slot.object_label = DEPTH_FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (k);
+      slot.part = static_cast<std::uint32_t> (part);
+      const Colour& colour = tones[k].colour (solids[k], part);
+      slot.r = colour[0];
+      slot.g = colour[1];
+      slot.b = colour[2];
+      slots.push_back (slot);
+    }
+  }
+  constexpr std::size_t NO_SLOT = std::numeric_limits<std::size_t>::max();
+  std::vector<std::size_t> pixel_slots (parameters.width * parameters.height, NO_SLOT);
+  PortableRandom colour_random (parameters.seed + COLOUR_NOISE_SEED_OFFSET);
+
   // One ray per pixel.
   pcl::PointXYZRGBL lost;
   lost.x = lost.y = lost.z = std::numeric_limits<float>::quiet_NaN();
@@ -698,17 +884,71 @@ generateDepthCameraScene (const DepthCameraParameters& parameters)
       }
       pcl::PointXYZRGBL& point = (*scene.cloud) (u, v);
       point.getVector3fMap() = (measured * pixel_ray).cast<float>();
-      const Colour& colour = object < 0 ? TABLE_COLOUR : palette[object];
+      const std::size_t slot =
+          object < 0
+              ? 0
+              : first_slot[object] + tones[object].partOf (solids[object], p, normal);
+      pixel_slots[v * parameters.width + u] = slot;
+      const Colour colour = {slots[slot].r, slots[slot].g, slots[slot].b};
       point.r = shade (colour[0], cos_incidence);
       point.g = shade (colour[1], cos_incidence);
       point.b = shade (colour[2], cos_incidence);
+      if (parameters.colour_noise > 0.0f) {
+        const double sigma = parameters.colour_noise;
+        const double brightness =
+            colour_random.truncatedNormal (sigma, NOISE_TRUNCATION);
+        point.r = addColourNoise (
+            point.r,
+            brightness + colour_random.truncatedNormal (0.5 * sigma, NOISE_TRUNCATION));
+        point.g = addColourNoise (
+            point.g,
+            brightness + colour_random.truncatedNormal (0.5 * sigma, NOISE_TRUNCATION));
+        point.b = addColourNoise (
+            point.b,
+            brightness + colour_random.truncatedNormal (0.5 * sigma, NOISE_TRUNCATION));
+      }
       point.a = 255;
       if (object >= 0) {
         point.label = DEPTH_FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (object);
         ++scene.objects[object].num_points;
       }
     }
+
+  // Regions: the slots with points, labelled in slot order.
+  for (const std::size_t slot : pixel_slots)
+    if (slot != NO_SLOT)
+      ++slots[slot].num_points;
+  std::vector<std::uint32_t> slot_labels (slots.size(), 0);
+  for (std::size_t slot = 0; slot < slots.size(); ++slot)
+    if (slots[slot].num_points > 0) {
+      slot_labels[slot] = static_cast<std::uint32_t> (scene.regions.size()) + 1;
+      scene.regions.push_back (slots[slot]);
+      scene.regions.back().label = slot_labels[slot];
+    }
+  scene.region_labels.reserve (pixel_slots.size());
+  for (const std::size_t slot : pixel_slots)
+    scene.region_labels.push_back (slot == NO_SLOT ? 0 : slot_labels[slot]);
+  for (std::size_t k = 0; k < solids.size(); ++k)
+    if (tones[k].subtle)
+      for (const auto& [a, b] : tones[k].adjacent()) {
+        const std::uint32_t label_a = slot_labels[first_slot[k] + a];
+        const std::uint32_t label_b = slot_labels[first_slot[k] + b];
+        if (label_a != 0 && label_b != 0)
+          scene.similar_regions.emplace_back (std::min (label_a, label_b),
+                                              std::max (label_a, label_b));
+      }
+  std::sort (scene.similar_regions.begin(), scene.similar_regions.end());
   return scene;
+}
+
+pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
+regionLabelledCloud (const DepthCameraScene& scene)
+{
+  pcl::PointCloud<pcl::PointXYZRGBL>::Ptr cloud (
+      new pcl::PointCloud<pcl::PointXYZRGBL> (*scene.cloud));
+  for (std::size_t i = 0; i < cloud->size() && i < scene.region_labels.size(); ++i)
+    (*cloud)[i].label = scene.region_labels[i];
+  return cloud;
 }
 
 } // namespace tda

@@ -44,6 +44,51 @@ const std::array<Colour, MAX_TABLETOP_OBJECTS> OBJECT_PALETTE = {{{210, 40, 40},
                                                                   {250, 140, 20},
                                                                   {235, 235, 235}}};
 
+/** Colour regions: the colour differences of TabletopParameters::colour_regions
+ * with margins, so that other conversions to CIELAB (in float, with other rounded
+ * matrices) agree with the documented bounds. */
+constexpr double SIMILAR_LOW = SIMILAR_REGION_MIN_DELTA_E + 0.5;
+constexpr double SIMILAR_HIGH = SIMILAR_REGION_MAX_DELTA_E - 0.5;
+constexpr double DISTINCT = DISTINCT_REGION_MIN_DELTA_E + 1.0;
+constexpr double OTHER_OBJECTS = SIMILAR_REGION_MIN_DELTA_E + 0.5;
+/** Painted channels stay in this range, so that colour noise of up to 8 levels,
+ * truncated at 3 standard deviations, is never clipped. */
+constexpr int MIN_PAINT_LEVEL = 24, MAX_PAINT_LEVEL = 231;
+/** Largest change of a channel from a region's colour to its similar partner's. */
+constexpr int SIMILAR_STEP = 28;
+/** Similar pairs are chosen among regions with at least this many samples each. */
+constexpr std::size_t MIN_SIMILAR_SAMPLES = 15;
+/** Cylinders at least this tall (metres) may get three bands instead of two. */
+constexpr double MIN_THREE_BAND_HEIGHT = 0.09;
+constexpr int MAX_COLOUR_DRAWS = 2000;
+constexpr int MAX_PAINT_ATTEMPTS = 100;
+/** Offset of the seed of the painting's random generator from the scene's seed. */
+constexpr std::uint64_t PAINT_SEED_OFFSET = 0x9e3779b97f4a7c15ULL;
+
+/** The sRGB colour in CIELAB (D65 white, 2 degree observer). */
+Eigen::Vector3d
+toLab (const Colour& colour)
+{
+  const auto linear = [] (std::uint8_t level) {
+    const double c = level / 255.0;
+    return c <= 0.04045 ? c / 12.92 : std::pow ((c + 0.055) / 1.055, 2.4);
+  };
+  const Eigen::Vector3d rgb (
+      linear (colour[0]), linear (colour[1]), linear (colour[2]));
+  Eigen::Matrix3d to_xyz;
+  to_xyz << 0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339,
+      0.1191920, 0.9503041;
+  const Eigen::Vector3d xyz =
+      (to_xyz * rgb).cwiseQuotient (Eigen::Vector3d (0.95047, 1.0, 1.08883));
+  const auto f = [] (double t) {
+    constexpr double delta = 6.0 / 29.0;
+    return t > delta * delta * delta ? std::cbrt (t)
+                                     : t / (3.0 * delta * delta) + 4.0 / 29.0;
+  };
+  const double fx = f (xyz.x()), fy = f (xyz.y()), fz = f (xyz.z());
+  return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
+}
+
 /** Narrows [t0, t1] to the parameters t at which p + t * d lies strictly inside the
  * slab |x| < half; false when nothing is left. */
 bool
@@ -184,6 +229,218 @@ struct Primitive {
     return local;
   }
 };
+
+/** The colour regions of an object: how its surface is split into parts, which
+ * parts share a boundary, which of those are painted in similar colours, and the
+ * colours. One part without TabletopParameters::colour_regions. */
+struct Painting {
+  std::size_t parts = 1;
+  /** Cylinder: heights (object frame) of the boundaries between its bands,
+   * increasing. */
+  std::vector<double> band_bounds;
+  /** Sphere: unit axis of its parallel splitting planes (object frame) and their
+   * offsets along it, increasing. */
+  Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
+  std::vector<double> plane_offsets;
+  /** Pairs (a, b), a < b, of parts that share a boundary. */
+  std::vector<std::pair<std::size_t, std::size_t>> adjacent;
+  /** Adjacent pairs painted in similar colours, disjoint, increasing. */
+  std::vector<std::pair<std::size_t, std::size_t>> similar;
+  std::vector<Colour> colours;
+
+  /** The part of a surface sample of \a primitive, as TabletopColourRegion::part. */
+  std::size_t
+  partOf (const Primitive& primitive, const SurfaceSample& sample) const
+  {
+    if (parts == 1)
+      return 0;
+    const Eigen::Matrix3d to_local = primitive.rotation().transpose();
+    const Eigen::Vector3d normal = to_local * sample.normal;
+    const Eigen::Vector3d local = to_local * (sample.point - primitive.centre);
+    switch (primitive.type) {
+    case PrimitiveType::BOX:
+      if (normal.z() > 0.5)
+        return 0;
+      if (std::abs (normal.y()) > 0.5)
+        return normal.y() < 0.0 ? 1 : 2;
+      return normal.x() < 0.0 ? 3 : 4;
+    case PrimitiveType::CYLINDER:
+      if (normal.z() > 0.5)
+        return parts - 1;
+      return static_cast<std::size_t> (
+          std::upper_bound (band_bounds.begin(), band_bounds.end(), local.z()) -
+          band_bounds.begin());
+    case PrimitiveType::SPHERE:
+      return static_cast<std::size_t> (std::upper_bound (plane_offsets.begin(),
+                                                         plane_offsets.end(),
+                                                         axis.dot (local)) -
+                                       plane_offsets.begin());
+    }
+    return 0;
+  }
+};
+
+/** Draws how the primitive is split into colour regions (colours left empty). */
+Painting
+drawPainting (const Primitive& primitive, PortableRandom& random)
+{
+  Painting painting;
+  switch (primitive.type) {
+  case PrimitiveType::BOX:
+    // Top, sides -y, +y, -x, +x.
+    painting.parts = 5;
+    painting.adjacent = {
+        {0, 1}, {0, 2}, {0, 3}, {0, 4}, {1, 3}, {1, 4}, {2, 3}, {2, 4}};
+    break;
+  case PrimitiveType::CYLINDER: {
+    const double height = 2.0 * primitive.half.z();
+    const std::size_t bands =
+        height >= MIN_THREE_BAND_HEIGHT && random.uniform() < 0.5 ? 3 : 2;
+    for (std::size_t i = 1; i < bands; ++i)
+      painting.band_bounds.push_back (
+          height * ((i + random.uniform (-0.25, 0.25)) / bands - 0.5));
+    painting.parts = bands + 1;
+    for (std::size_t i = 0; i < bands; ++i)
+      painting.adjacent.emplace_back (i, i + 1);
+    break;
+  }
+  case PrimitiveType::SPHERE: {
+    const double radius = primitive.half.x();
+    const bool halves = random.uniform() < 0.5;
+    // Halves: a tilted plane through the centre; else a band about a steep axis.
+    const double polar = halves ? random.uniform (M_PI / 6.0, M_PI / 2.0)
+                                : random.uniform (0.0, M_PI / 4.0);
+    const double azimuth = random.uniform (0.0, 2.0 * M_PI);
+    painting.axis = Eigen::Vector3d (std::sin (polar) * std::cos (azimuth),
+                                     std::sin (polar) * std::sin (azimuth),
+                                     std::cos (polar));
+    if (halves)
+      painting.plane_offsets = {0.0};
+    else
+      painting.plane_offsets = {radius * random.uniform (-0.45, -0.1),
+                                radius * random.uniform (0.1, 0.45)};
+    painting.parts = painting.plane_offsets.size() + 1;
+    for (std::size_t i = 0; i + 1 < painting.parts; ++i)
+      painting.adjacent.emplace_back (i, i + 1);
+    break;
+  }
+  }
+  return painting;
+}
+
+/** Chooses the similar pairs of the painting among the adjacent parts that have at
+ * least MIN_SIMILAR_SAMPLES samples each (\a counts): one, or for a box one or
+ * two, no part in two pairs. */
+void
+chooseSimilarPairs (const std::vector<std::size_t>& counts,
+                    PortableRandom& random,
+                    Painting& painting)
+{
+  std::vector<std::pair<std::size_t, std::size_t>> candidates;
+  for (const auto& pair : painting.adjacent)
+    if (counts[pair.first] >= MIN_SIMILAR_SAMPLES &&
+        counts[pair.second] >= MIN_SIMILAR_SAMPLES)
+      candidates.push_back (pair);
+  for (std::size_t i = candidates.size(); i > 1; --i)
+    std::swap (candidates[i - 1], candidates[random.index (i)]);
+  const std::size_t wanted = painting.parts == 5 ? 1 + random.index (2) : 1;
+  std::vector<bool> taken (painting.parts, false);
+  for (const auto& pair : candidates) {
+    if (painting.similar.size() == wanted)
+      break;
+    if (taken[pair.first] || taken[pair.second])
+      continue;
+    taken[pair.first] = taken[pair.second] = true;
+    painting.similar.push_back (pair);
+  }
+  std::sort (painting.similar.begin(), painting.similar.end());
+}
+
+/** Draws the colours of the painting's parts as TabletopParameters::colour_regions
+ * documents, given the table's colour and the colours of the objects painted
+ * before, in CIELAB; false when the draws do not succeed. */
+bool
+drawColours (const Eigen::Vector3d& table,
+             const std::vector<Eigen::Vector3d>& others,
+             PortableRandom& random,
+             Painting& painting)
+{
+  std::vector<std::size_t> partner (painting.parts, painting.parts);
+  for (const auto& pair : painting.similar)
+    partner[pair.second] = pair.first;
+  std::vector<Eigen::Vector3d> labs;
+  for (int attempt = 0; attempt < MAX_PAINT_ATTEMPTS; ++attempt) {
+    painting.colours.clear();
+    labs.clear();
+    for (std::size_t part = 0; part < painting.parts; ++part) {
+      const std::size_t similar = partner[part];
+      bool found = false;
+      for (int draw = 0; draw < MAX_COLOUR_DRAWS && !found; ++draw) {
+        Colour colour;
+        for (std::size_t c = 0; c < 3; ++c) {
+          const long level =
+              similar < part
+                  ? painting.colours[similar][c] +
+                        static_cast<long> (random.index (2 * SIMILAR_STEP + 1)) -
+                        SIMILAR_STEP
+                  : MIN_PAINT_LEVEL + static_cast<long> (random.index (
+                                          MAX_PAINT_LEVEL - MIN_PAINT_LEVEL + 1));
+          colour[c] = static_cast<std::uint8_t> (
+              std::clamp<long> (level, MIN_PAINT_LEVEL, MAX_PAINT_LEVEL));
+        }
+        const Eigen::Vector3d lab = toLab (colour);
+        found = (lab - table).norm() >= DISTINCT;
+        for (std::size_t k = 0; k < part && found; ++k) {
+          const double difference = (lab - labs[k]).norm();
+          found = k == similar ? difference >= SIMILAR_LOW && difference <= SIMILAR_HIGH
+                               : difference >= DISTINCT;
+        }
+        for (std::size_t k = 0; k < others.size() && found; ++k)
+          found = (lab - others[k]).norm() >= OTHER_OBJECTS;
+        if (found) {
+          painting.colours.push_back (colour);
+          labs.push_back (lab);
+        }
+      }
+      if (!found)
+        break;
+    }
+    if (painting.colours.size() == painting.parts)
+      return true;
+  }
+  return false;
+}
+
+/** Paints the objects in colour regions from a random generator of their own:
+ * samples[0] is the table, samples[k + 1] object k; sets parts[k + 1] to the part
+ * of each sample of object k. */
+void
+paintObjects (const std::vector<Primitive>& objects,
+              const std::vector<std::vector<SurfaceSample>>& samples,
+              std::uint64_t seed,
+              std::vector<Painting>& paintings,
+              std::vector<std::vector<std::size_t>>& parts)
+{
+  PortableRandom random (seed + PAINT_SEED_OFFSET);
+  const Eigen::Vector3d table = toLab (TABLE_COLOUR);
+  std::vector<Eigen::Vector3d> painted;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    Painting& painting = paintings[k];
+    painting = drawPainting (objects[k], random);
+    std::vector<std::size_t> counts (painting.parts, 0);
+    for (const SurfaceSample& sample : samples[k + 1]) {
+      parts[k + 1].push_back (painting.partOf (objects[k], sample));
+      ++counts[parts[k + 1].back()];
+    }
+    chooseSimilarPairs (counts, random, painting);
+    if (!drawColours (table, painted, random, painting))
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "generateTabletopScene: cannot paint object "
+                               << k << " in colour regions");
+    for (const Colour& colour : painting.colours)
+      painted.push_back (toLab (colour));
+  }
+}
 
 /** Draws the type, size and yaw of an object (position left at the origin). */
 Primitive
@@ -394,6 +651,38 @@ generateTabletopScene (const TabletopParameters& parameters)
             << " m (min gap plus noise) and none hiding another; use fewer objects, a "
                "larger table or less noise");
 
+  // Colour regions: one part per object unless painted. A slot is a part of the
+  // table or of an object, numbered through the scene; the regions are the slots
+  // with points.
+  std::vector<Painting> paintings (objects.size());
+  std::vector<std::vector<std::size_t>> parts (samples.size());
+  if (parameters.colour_regions)
+    paintObjects (objects, samples, parameters.seed, paintings, parts);
+  else
+    for (std::size_t k = 0; k < objects.size(); ++k) {
+      paintings[k].colours = {palette[k]};
+      parts[k + 1].assign (samples[k + 1].size(), 0);
+    }
+  parts[0].assign (samples[0].size(), 0);
+  std::vector<TabletopColourRegion> slots (1);
+  slots[0].r = TABLE_COLOUR[0];
+  slots[0].g = TABLE_COLOUR[1];
+  slots[0].b = TABLE_COLOUR[2];
+  std::vector<std::size_t> first_slot (samples.size(), 0);
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    first_slot[k + 1] = slots.size();
+    for (std::size_t part = 0; part < paintings[k].parts; ++part) {
+      TabletopColourRegion slot;
+      slot.object_label = FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (k);
+      slot.part = static_cast<std::uint32_t> (part);
+      slot.r = paintings[k].colours[part][0];
+      slot.g = paintings[k].colours[part][1];
+      slot.b = paintings[k].colours[part][2];
+      slots.push_back (slot);
+    }
+  }
+  std::vector<std::size_t> point_slots;
+
   TabletopScene scene;
   scene.cloud.reset (new pcl::PointCloud<pcl::PointXYZRGBL>);
   scene.cloud->sensor_origin_ = Eigen::Vector4f (parameters.camera_position.x(),
@@ -405,14 +694,16 @@ generateTabletopScene (const TabletopParameters& parameters)
   scene.table_b = TABLE_COLOUR[2];
   scene.max_noise_displacement = static_cast<float> (max_displacement);
   for (std::size_t part = 0; part < samples.size(); ++part) {
-    const Colour& colour = part == 0 ? TABLE_COLOUR : palette[part - 1];
     const std::uint32_t label =
         part == 0 ? TABLE_LABEL
                   : FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (part - 1);
     std::size_t kept = 0;
-    for (const SurfaceSample& s : samples[part]) {
+    for (std::size_t i = 0; i < samples[part].size(); ++i) {
+      const SurfaceSample& s = samples[part][i];
       if (random.uniform() < parameters.dropout)
         continue;
+      const std::size_t slot = first_slot[part] + parts[part][i];
+      const Colour colour = {slots[slot].r, slots[slot].g, slots[slot].b};
       const Eigen::Vector3d ray = s.point - camera;
       const double distance = ray.norm();
       const double sigma = parameters.noise_sigma * distance * distance;
@@ -427,6 +718,7 @@ generateTabletopScene (const TabletopParameters& parameters)
       point.b = noisyChannel (colour[2], parameters.colour_noise, random);
       point.label = label;
       scene.cloud->push_back (point);
+      point_slots.push_back (slot);
       ++kept;
     }
     if (part == 0) {
@@ -440,13 +732,46 @@ generateTabletopScene (const TabletopParameters& parameters)
     truth.centre = object.centre.cast<float>();
     truth.dimensions = (2.0 * object.half).cast<float>();
     truth.yaw = static_cast<float> (object.yaw);
-    truth.r = colour[0];
-    truth.g = colour[1];
-    truth.b = colour[2];
+    truth.r = paintings[part - 1].colours[0][0];
+    truth.g = paintings[part - 1].colours[0][1];
+    truth.b = paintings[part - 1].colours[0][2];
     truth.num_points = kept;
     scene.objects.push_back (truth);
   }
+
+  // Regions: the table, then the slots with points, labelled in slot order.
+  for (const std::size_t slot : point_slots)
+    ++slots[slot].num_points;
+  std::vector<std::uint32_t> slot_labels (slots.size(), 0);
+  for (std::size_t slot = 0; slot < slots.size(); ++slot)
+    if (slot == 0 || slots[slot].num_points > 0) {
+      slot_labels[slot] = static_cast<std::uint32_t> (scene.regions.size()) + 1;
+      scene.regions.push_back (slots[slot]);
+      scene.regions.back().label = slot_labels[slot];
+    }
+  scene.region_labels.reserve (point_slots.size());
+  for (const std::size_t slot : point_slots)
+    scene.region_labels.push_back (slot_labels[slot]);
+  for (std::size_t k = 0; k < objects.size(); ++k)
+    for (const auto& [a, b] : paintings[k].similar) {
+      const std::uint32_t label_a = slot_labels[first_slot[k + 1] + a];
+      const std::uint32_t label_b = slot_labels[first_slot[k + 1] + b];
+      if (label_a != 0 && label_b != 0)
+        scene.similar_regions.emplace_back (std::min (label_a, label_b),
+                                            std::max (label_a, label_b));
+    }
+  std::sort (scene.similar_regions.begin(), scene.similar_regions.end());
   return scene;
+}
+
+pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
+regionLabelledCloud (const TabletopScene& scene)
+{
+  pcl::PointCloud<pcl::PointXYZRGBL>::Ptr cloud (
+      new pcl::PointCloud<pcl::PointXYZRGBL> (*scene.cloud));
+  for (std::size_t i = 0; i < cloud->size() && i < scene.region_labels.size(); ++i)
+    (*cloud)[i].label = scene.region_labels[i];
+  return cloud;
 }
 
 } // namespace tda

@@ -4,7 +4,8 @@
 // table, ray-cast by a simulated structured-light depth camera into an organized
 // frame, each object labelled. A second scene generator, made independently of
 // tabletop_scenes.h (other objects, camera, noise and density), to validate
-// choices tuned on the first.
+// choices tuned on the first; optionally with the objects painted in colour
+// regions, as ground truth for the segmentation of colour regions.
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -14,6 +15,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pcl {
@@ -27,6 +29,23 @@ constexpr std::uint32_t DEPTH_BACKGROUND_LABEL = 0;
 constexpr std::uint32_t DEPTH_FIRST_OBJECT_LABEL = 1;
 /** \brief Most objects a depth camera scene holds (one distinct colour each). */
 constexpr std::size_t MAX_DEPTH_CAMERA_OBJECTS = 8;
+
+/** \brief Smallest colour difference (CIE76 Delta E in CIELAB, D65) between the two
+ * tones of an object painted in subtle colour regions (DepthCameraScene::
+ * similar_regions). */
+constexpr float DEPTH_SUBTLE_MIN_DELTA_E = 11.0f;
+/** \brief Largest colour difference (CIE76 Delta E) between the two tones of an
+ * object painted in subtle colour regions. */
+constexpr float DEPTH_SUBTLE_MAX_DELTA_E = 17.0f;
+/** \brief Smallest colour difference (CIE76 Delta E) between the two tones of an
+ * object painted in contrasting colour regions. */
+constexpr float DEPTH_CONTRAST_MIN_DELTA_E = 30.0f;
+/** \brief Smallest colour difference (CIE76 Delta E) between the table and every
+ * object region. */
+constexpr float DEPTH_TABLE_MIN_DELTA_E = 25.0f;
+/** \brief Smallest colour difference (CIE76 Delta E) between regions of different
+ * objects. */
+constexpr float DEPTH_OBJECTS_MIN_DELTA_E = 10.0f;
 
 /** \brief Kind of object standing on the table of a depth camera scene. */
 enum class DepthObjectKind {
@@ -126,6 +145,26 @@ struct DepthCameraParameters {
    * removing the table plane; the random draws and the object pixels are the same
    * either way. */
   bool remove_table = true;
+  /** \brief Colour noise, in 0-255 levels: each measured pixel's colour, after
+   * shading, gets a brightness offset common to its three channels with this
+   * standard deviation plus an offset per channel with half of it, both Gaussian
+   * truncated at 4 standard deviations; the sum is rounded and clamped to 0-255.
+   * Drawn from a random generator of its own, seeded from \a seed, so that the
+   * depths and labels do not depend on it; 0: no colour noise. */
+  float colour_noise = 0.0f;
+  /** \brief Paint each object in two tones, as colour regions: a bowl outside
+   * (with the rim) and inside; a cone below and above a height drawn in 35-65 % of
+   * its height; a ring in two halves; an L-shaped block's base and upright; a
+   * capsule's middle and its two ends (three regions, both ends in the second
+   * tone). The first tone is the object's colour (DepthCameraObject::r, g, b),
+   * the second one differs from it by DEPTH_SUBTLE_MIN_DELTA_E to
+   * DEPTH_SUBTLE_MAX_DELTA_E (subtle, half of the objects on average) or by at
+   * least DEPTH_CONTRAST_MIN_DELTA_E; every tone is at least
+   * DEPTH_TABLE_MIN_DELTA_E from the table's colour and DEPTH_OBJECTS_MIN_DELTA_E
+   * from the tones of the other objects. Drawn from a random generator of its own,
+   * seeded from \a seed: the depths and object labels are those of the scene
+   * without painting. */
+  bool colour_regions = false;
   /** \brief Seed of the random generator; equal seeds give identical scenes. */
   std::uint64_t seed = 0;
 };
@@ -151,11 +190,36 @@ struct DepthCameraObject {
   /** \brief Distance from its footprint to the nearest other object's footprint,
    * in metres (infinite when it is alone). */
   float gap = 0.0f;
-  /** \brief Red of its colour before shading. */
+  /** \brief Red of its colour before shading (with
+   * DepthCameraParameters::colour_regions, of its first tone). */
   std::uint8_t r = 0;
   /** \brief Green of its colour before shading. */
   std::uint8_t g = 0;
   /** \brief Blue of its colour before shading. */
+  std::uint8_t b = 0;
+  /** \brief Number of its points (pixels) in the cloud. */
+  std::size_t num_points = 0;
+};
+
+/** \brief Ground truth of one colour region of a depth camera scene: the table
+ * (when kept), an object (without painting) or one painted part of an object. */
+struct DepthColourRegion {
+  /** \brief Its label in DepthCameraScene::region_labels (its index in
+   * DepthCameraScene::regions plus 1). */
+  std::uint32_t label = 1;
+  /** \brief Label of its object in the cloud (DEPTH_FIRST_OBJECT_LABEL + k), or
+   * DEPTH_BACKGROUND_LABEL for the table. */
+  std::uint32_t object_label = DEPTH_BACKGROUND_LABEL;
+  /** \brief Which part of its object it is: 0 for the table and for unpainted
+   * objects; bowl: 0 outside and rim, 1 inside; cone: 0 lower, 1 upper part; ring:
+   * 0 the half at y < 0 of its own frame, 1 the other; L-shaped block: 0 base, 1
+   * upright; capsule: 0 the end at -x, 1 the middle, 2 the end at +x. */
+  std::uint32_t part = 0;
+  /** \brief Red of its colour before shading and noise. */
+  std::uint8_t r = 0;
+  /** \brief Green of its colour before shading and noise. */
+  std::uint8_t g = 0;
+  /** \brief Blue of its colour before shading and noise. */
   std::uint8_t b = 0;
   /** \brief Number of its points (pixels) in the cloud. */
   std::size_t num_points = 0;
@@ -167,7 +231,8 @@ struct DepthCameraScene {
    * frame (x right, y down, z forward; the sensor origin is 0): one point per pixel,
    * label DEPTH_BACKGROUND_LABEL for the table and the lost pixels (NaN
    * coordinates, colour 0), DEPTH_FIRST_OBJECT_LABEL + k for object k. Colours are
-   * the object colours shaded by the angle of incidence. */
+   * the object (or region) colours shaded by the angle of incidence, plus the
+   * colour noise. */
   pcl::PointCloud<pcl::PointXYZRGBL>::Ptr cloud;
   /** \brief The objects, in label order. */
   std::vector<DepthCameraObject> objects;
@@ -183,6 +248,18 @@ struct DepthCameraScene {
   /** \brief Number of table pixels measured (before any removal by
    * \a remove_table). */
   std::size_t num_table_points = 0;
+  /** \brief Colour region of each pixel (same order as the cloud): 0 for the lost
+   * pixels and the removed table, else a label from 1 up to regions.size(),
+   * contiguous. Without DepthCameraParameters::colour_regions every object is one
+   * region. */
+  std::vector<std::uint32_t> region_labels;
+  /** \brief The colour regions that have points, in label order: the table when
+   * it is kept, then the regions of object 0 by part, of object 1, and so on. */
+  std::vector<DepthColourRegion> regions;
+  /** \brief Labels (a, b), a < b, of the adjacent regions of the objects painted in
+   * subtle tones, in increasing order (empty without
+   * DepthCameraParameters::colour_regions). */
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> similar_regions;
 };
 
 /** \brief Generates a depth camera scene: a table with 3 to 6 (by default) objects
@@ -193,10 +270,18 @@ struct DepthCameraScene {
  * random earlier one (footprint gap in [min_close_gap, max_close_gap]) or far from
  * all (gap at least min_far_gap), inside the layout disc. Objects may hide parts of
  * one another, as in real frames; num_points tells how much of each is seen.
+ * With DepthCameraParameters::colour_regions the objects are painted in two tones,
+ * as ground truth for the segmentation of colour regions (DepthCameraScene::regions).
  * \throws pcl::BadArgumentException on invalid parameters, or when no layout is
  * found (objects too many or gaps too large for the layout disc) */
 DepthCameraScene
 generateDepthCameraScene (const DepthCameraParameters& parameters);
+
+/** \brief A copy of the scene's organized cloud whose labels are the colour region
+ * labels (DepthCameraScene::region_labels; 0 for the lost pixels) instead of the
+ * object labels. */
+pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
+regionLabelledCloud (const DepthCameraScene& scene);
 
 } // namespace tda
 } // namespace pcl

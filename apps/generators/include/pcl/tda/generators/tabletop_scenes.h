@@ -1,7 +1,8 @@
 #pragma once
 
 // Tabletop scenes: boxes, cylinders and spheres on a table as a noisy depth camera
-// sees them, each labelled, as ground truth for the segmentation of objects.
+// sees them, each labelled, as ground truth for the segmentation of objects and,
+// with the objects painted in several colours, of colour regions.
 
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -10,6 +11,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace pcl {
@@ -25,6 +27,37 @@ constexpr std::size_t MAX_TABLETOP_OBJECTS = 8;
 
 /** \brief Kind of primitive standing on the table of a tabletop scene. */
 enum class PrimitiveType { BOX, CYLINDER, SPHERE };
+
+/** \brief Smallest colour difference (CIE76 Delta E in CIELAB, D65) between the
+ * colours of two adjacent regions of a tabletop scene painted in colour regions. */
+constexpr float SIMILAR_REGION_MIN_DELTA_E = 10.0f;
+/** \brief Largest colour difference (CIE76 Delta E) between the two regions of a
+ * similar pair (TabletopScene::similar_regions). */
+constexpr float SIMILAR_REGION_MAX_DELTA_E = 18.0f;
+/** \brief Smallest colour difference (CIE76 Delta E) between a region of an object
+ * and every other region of the same object or the table, except its similar
+ * partner. */
+constexpr float DISTINCT_REGION_MIN_DELTA_E = 25.0f;
+
+/** \brief Depth and colour noise of the camera of a tabletop scene, as a named
+ * level (TabletopParameters::setNoise()). */
+struct TabletopNoise {
+  /** \brief Name of the level ("none", "moderate", "heavy"). */
+  const char* name;
+  /** \brief Standard deviation of the depth noise at 1 m from the camera, in metres
+   * (TabletopParameters::noise_sigma). */
+  float depth_sigma;
+  /** \brief Standard deviation of the per-channel colour noise, in 0-255 levels
+   * (TabletopParameters::colour_noise). */
+  float colour_sigma;
+};
+
+/** \brief No noise: exact depths and colours. */
+inline constexpr TabletopNoise TABLETOP_NO_NOISE = {"none", 0.0f, 0.0f};
+/** \brief Moderate noise: depth sigma 0.5 mm at 1 m, colour sigma 4 levels. */
+inline constexpr TabletopNoise TABLETOP_MODERATE_NOISE = {"moderate", 0.0005f, 4.0f};
+/** \brief Heavy noise: depth sigma 1.5 mm at 1 m, colour sigma 8 levels. */
+inline constexpr TabletopNoise TABLETOP_HEAVY_NOISE = {"heavy", 0.0015f, 8.0f};
 
 /** \brief Parameters of generateTabletopScene().
  *
@@ -62,8 +95,30 @@ struct TabletopParameters {
   float min_gap = 0.05f;
   /** \brief Position of the virtual camera, in metres; must be above the table. */
   Eigen::Vector3f camera_position = Eigen::Vector3f (0.0f, -0.6f, 1.0f);
+  /** \brief Paint every object in several colour regions instead of one colour:
+   * each face of a box its own colour; a cylinder in 2 or 3 horizontal bands and its
+   * top cap; a sphere in two halves split by a tilted plane through its centre, or
+   * in two caps and the band between them. On each object one pair of regions that
+   * share a boundary (one or two disjoint pairs on a box), chosen among the pairs
+   * whose regions have at least 15 samples each, is painted only
+   * SIMILAR_REGION_MIN_DELTA_E to SIMILAR_REGION_MAX_DELTA_E apart; all other
+   * regions of the object and the table are at least DISTINCT_REGION_MIN_DELTA_E
+   * apart; regions of different objects are at least SIMILAR_REGION_MIN_DELTA_E
+   * apart. Painted channels are within 24-231, so that colour noise up to 8 levels
+   * is never clipped. The colours and the region boundaries come from a random
+   * generator of their own, seeded from \a seed: the points, their object labels
+   * and the noise are those of the scene without painting. */
+  bool colour_regions = false;
   /** \brief Seed of the random generator; equal seeds give identical scenes. */
   std::uint64_t seed = 0;
+
+  /** \brief Sets the depth and colour noise to those of \a noise. */
+  void
+  setNoise (const TabletopNoise& noise)
+  {
+    noise_sigma = noise.depth_sigma;
+    colour_noise = noise.colour_sigma;
+  }
 };
 
 /** \brief Ground truth of one object of a tabletop scene. */
@@ -79,8 +134,35 @@ struct TabletopObject {
   Eigen::Vector3f dimensions = Eigen::Vector3f::Zero();
   /** \brief Rotation about the z axis, in radians (boxes only; 0 otherwise). */
   float yaw = 0.0f;
-  /** \brief Colour before noise. */
+  /** \brief Colour before noise (with TabletopParameters::colour_regions, the
+   * colour of its first region, part 0). */
   std::uint8_t r = 0, g = 0, b = 0;
+  /** \brief Number of its points in the cloud. */
+  std::size_t num_points = 0;
+};
+
+/** \brief Ground truth of one colour region of a tabletop scene: the table, an
+ * object (without painting) or one painted part of an object. */
+struct TabletopColourRegion {
+  /** \brief Its label in TabletopScene::region_labels (its index in
+   * TabletopScene::regions plus 1; TABLE_LABEL for the table). */
+  std::uint32_t label = TABLE_LABEL;
+  /** \brief Label of the object it belongs to in the cloud: TABLE_LABEL for the
+   * table, FIRST_OBJECT_LABEL + k for object k. */
+  std::uint32_t object_label = TABLE_LABEL;
+  /** \brief Which part of its object it is: 0 for the table and for unpainted
+   * objects; box: 0 top, 1 side -y, 2 side +y, 3 side -x, 4 side +x (in the box's
+   * own frame); cylinder with n bands: 0 to n - 1 the bands from the bottom up, n
+   * the top cap; sphere: its parts in order along the (upward) axis of its
+   * splitting planes, 0 the lowest (two halves, or a cap, the band and the other
+   * cap). */
+  std::uint32_t part = 0;
+  /** \brief Red of its colour before noise. */
+  std::uint8_t r = 0;
+  /** \brief Green of its colour before noise. */
+  std::uint8_t g = 0;
+  /** \brief Blue of its colour before noise. */
+  std::uint8_t b = 0;
   /** \brief Number of its points in the cloud. */
   std::size_t num_points = 0;
 };
@@ -88,8 +170,9 @@ struct TabletopObject {
 /** \brief A generated tabletop scene with its ground truth. */
 struct TabletopScene {
   /** \brief The points: label TABLE_LABEL for the table, FIRST_OBJECT_LABEL + k for
-   * object k; sensor_origin_ holds the camera position. Table points come first,
-   * then the objects in label order. */
+   * object k (also when painted: the colour regions are in \a region_labels and
+   * regionLabelledCloud()); sensor_origin_ holds the camera position. Table points come
+   * first, then the objects in label order. */
   pcl::PointCloud<pcl::PointXYZRGBL>::Ptr cloud;
   /** \brief The objects, in label order. */
   std::vector<TabletopObject> objects;
@@ -101,6 +184,19 @@ struct TabletopScene {
   Eigen::Vector4f table_plane = Eigen::Vector4f (0.0f, 0.0f, 1.0f, 0.0f);
   /** \brief Bound on the displacement of any point by the depth noise, in metres. */
   float max_noise_displacement = 0.0f;
+  /** \brief Colour region of each point of the cloud (same order): a label from
+   * TABLE_LABEL (the table) up to regions.size(), contiguous. Without
+   * TabletopParameters::colour_regions every object is one region and the labels
+   * equal the cloud's object labels. */
+  std::vector<std::uint32_t> region_labels;
+  /** \brief The colour regions that have points, in label order: the table, then
+   * the regions of object 0 by part, of object 1, and so on. */
+  std::vector<TabletopColourRegion> regions;
+  /** \brief The similar pairs: labels (a, b), a < b, of adjacent regions of one
+   * object whose colours are only SIMILAR_REGION_MIN_DELTA_E to
+   * SIMILAR_REGION_MAX_DELTA_E apart, in increasing order (empty without
+   * TabletopParameters::colour_regions). */
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> similar_regions;
 };
 
 /** \brief Generates a tabletop scene: a table with boxes, cylinders and spheres
@@ -112,10 +208,17 @@ struct TabletopScene {
  * of another (objects may hide parts of the table): each object's points form one
  * connected patch. After removing the table plane, Euclidean clustering with a
  * tolerance between about 3 * point_spacing and min_gap recovers the objects.
+ * With TabletopParameters::colour_regions the objects are painted in colour regions,
+ * as ground truth for the segmentation of colour regions (TabletopScene::regions).
  * \throws pcl::BadArgumentException on invalid parameters, or when no such layout
  * is found (too many objects or too much noise for the table) */
 TabletopScene
 generateTabletopScene (const TabletopParameters& parameters);
+
+/** \brief A copy of the scene's cloud whose labels are the colour region labels
+ * (TabletopScene::region_labels) instead of the object labels. */
+pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
+regionLabelledCloud (const TabletopScene& scene);
 
 } // namespace tda
 } // namespace pcl

@@ -1,0 +1,182 @@
+#include <pcl/common/centroid.h>
+#include <pcl/common/point_tests.h>
+#include <pcl/io/png_io.h>
+#include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/common/atomic_file.h>
+#include <pcl/exceptions.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+namespace {
+
+/** The smallest width and height of an organized cloud drawn as an image (a cloud of
+ * one row or column is organized for PCL, but no image). */
+constexpr std::size_t MIN_IMAGE_SIDE = 16;
+
+/** An RGB picture, row by row. */
+struct Picture {
+  std::size_t width = 0, height = 0;
+  std::vector<std::uint8_t> rgb;
+
+  Picture (std::size_t w, std::size_t h, std::uint8_t background)
+  : width (w), height (h), rgb (3 * w * h, background)
+  {}
+
+  void
+  set (std::size_t x, std::size_t y, const std::array<std::uint8_t, 3>& color)
+  {
+    std::copy (color.begin(), color.end(), rgb.begin() + 3 * (y * width + x));
+  }
+};
+
+/** The colour a point is drawn in. */
+std::array<std::uint8_t, 3>
+colorOf (const pcl::PointXYZRGBL& point, PictureColors colors)
+{
+  if (colors == PictureColors::LABELS)
+    return labelColor (point.label);
+  return {point.r, point.g, point.b};
+}
+
+/** An organized cloud pixel by pixel, each pixel a square of \a scale pixels. */
+Picture
+drawOrganized (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud, PictureColors colors)
+{
+  const std::size_t scale = std::max<std::size_t> (
+      1, std::min ((640 + cloud.width - 1) / cloud.width, 1280 / cloud.height));
+  Picture picture (cloud.width * scale, cloud.height * scale, 0);
+  for (std::size_t v = 0; v < cloud.height; ++v)
+    for (std::size_t u = 0; u < cloud.width; ++u) {
+      const pcl::PointXYZRGBL& point = cloud.at (u, v);
+      if (!pcl::isXYZFinite (point))
+        continue;
+      const auto color = colorOf (point, colors);
+      for (std::size_t dy = 0; dy < scale; ++dy)
+        for (std::size_t dx = 0; dx < scale; ++dx)
+          picture.set (u * scale + dx, v * scale + dy, color);
+    }
+  return picture;
+}
+
+/** Any cloud, orthographically along its smallest principal axis. */
+Picture
+drawProjected (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
+               PictureColors colors,
+               std::size_t width)
+{
+  std::vector<Eigen::Vector3f> points;
+  std::vector<std::array<std::uint8_t, 3>> point_colors;
+  for (const auto& point : cloud)
+    if (pcl::isXYZFinite (point)) {
+      points.push_back (point.getVector3fMap());
+      point_colors.push_back (colorOf (point, colors));
+    }
+  if (points.empty())
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "The cloud has no finite point to draw.");
+  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  for (const auto& p : points)
+    mean += p;
+  mean /= static_cast<float> (points.size());
+  Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();
+  for (const auto& p : points)
+    covariance += (p - mean) * (p - mean).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver (covariance);
+  // Eigenvalues ascending: view along the first axis, draw the other two.
+  Eigen::Vector3f view = solver.eigenvectors().col (0);
+  const Eigen::Vector3f sensor = cloud.sensor_origin_.head<3>();
+  if (view.dot (sensor - mean) > 0.0f)
+    view = -view; // looking from the sensor's side
+  const Eigen::Vector3f across = solver.eigenvectors().col (2);
+  const Eigen::Vector3f up = view.cross (across);
+  float min_x = std::numeric_limits<float>::max(), max_x = -min_x;
+  float min_y = min_x, max_y = -min_x;
+  for (const auto& p : points) {
+    const Eigen::Vector3f d = p - mean;
+    min_x = std::min (min_x, d.dot (across));
+    max_x = std::max (max_x, d.dot (across));
+    min_y = std::min (min_y, d.dot (up));
+    max_y = std::max (max_y, d.dot (up));
+  }
+  const float extent = std::max (max_x - min_x, std::numeric_limits<float>::min());
+  const float pixel = extent / static_cast<float> (width - 1);
+  const auto height = std::max<std::size_t> (
+      1, static_cast<std::size_t> (std::ceil ((max_y - min_y) / pixel)) + 1);
+  Picture picture (width, height, 255);
+  std::vector<float> depth (width * height, std::numeric_limits<float>::max());
+  const int splat = static_cast<int> (std::max<std::size_t> (1, width / 400));
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Eigen::Vector3f d = points[i] - mean;
+    const int x = static_cast<int> (std::lround ((d.dot (across) - min_x) / pixel));
+    const int y = static_cast<int> (std::lround ((max_y - d.dot (up)) / pixel));
+    const float z = d.dot (view);
+    for (int dy = -splat; dy <= splat; ++dy)
+      for (int dx = -splat; dx <= splat; ++dx) {
+        const int px = x + dx, py = y + dy;
+        if (px < 0 || py < 0 || px >= static_cast<int> (width) ||
+            py >= static_cast<int> (height))
+          continue;
+        float& nearest = depth[py * width + px];
+        if (z < nearest) {
+          nearest = z;
+          picture.set (px, py, point_colors[i]);
+        }
+      }
+  }
+  return picture;
+}
+
+} // namespace
+
+std::array<std::uint8_t, 3>
+labelColor (std::size_t label)
+{
+  static const std::array<std::array<std::uint8_t, 3>, 12> PALETTE{{{230, 25, 75},
+                                                                    {60, 180, 75},
+                                                                    {0, 130, 200},
+                                                                    {245, 130, 48},
+                                                                    {145, 30, 180},
+                                                                    {70, 240, 240},
+                                                                    {240, 50, 230},
+                                                                    {210, 245, 60},
+                                                                    {250, 190, 212},
+                                                                    {0, 128, 128},
+                                                                    {170, 110, 40},
+                                                                    {128, 0, 0}}};
+  if (label == 0)
+    return {128, 128, 128};
+  return PALETTE[(label - 1) % PALETTE.size()];
+}
+
+void
+saveCloudPicture (const std::string& path,
+                  const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
+                  PictureColors colors,
+                  std::size_t width)
+{
+  const Picture picture =
+      cloud.width >= MIN_IMAGE_SIDE && cloud.height >= MIN_IMAGE_SIDE
+          ? drawOrganized (cloud, colors)
+          : drawProjected (cloud, colors, width);
+  replaceFileAtomically (path, [&picture] (const std::string& temporary) {
+    pcl::io::saveRgbPNGFile (temporary,
+                             picture.rgb.data(),
+                             static_cast<int> (picture.width),
+                             static_cast<int> (picture.height));
+    std::ifstream written (temporary, std::ios::binary);
+    char signature[4] = {};
+    written.read (signature, 4);
+    return written && signature[1] == 'P' && signature[2] == 'N' && signature[3] == 'G';
+  });
+}
+
+} // namespace tda
+} // namespace pcl

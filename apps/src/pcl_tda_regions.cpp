@@ -1,0 +1,308 @@
+// pcl_tda_regions: colour region segmentation by topological persistence (thesis
+// Sec 4.2): every point labelled by its region, the H0 barcode of the homogeneity
+// filtration, and a picture of the regions.
+
+#include <pcl/common/io.h>
+#include <pcl/common/point_tests.h>
+#include <pcl/console/print.h>
+#include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/apps/region_settings.h>
+#include <pcl/tda/apps/tool_console.h>
+#include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/apps/tool_outputs.h>
+#include <pcl/tda/common/error_message.h>
+#include <pcl/tda/common/persistence_plots.h>
+#include <pcl/tda/common/progress_bar.h>
+#include <pcl/exceptions.h>
+#include <pcl/point_types.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace pcl::console;
+using Cloud = pcl::PointCloud<pcl::PointXYZRGB>;
+using Normals = pcl::PointCloud<pcl::Normal>;
+using pcl::tda::RegionSettings;
+using pcl::tda::ToolRegionGrowing;
+
+namespace {
+
+struct Options {
+  std::string input, output, barcode_svg, picture_png;
+  RegionSettings settings;
+  double memory_mib = 0.0;
+};
+
+void
+printHelp (const char* program)
+{
+  print_info ("Syntax is: %s input.pcd output.pcd <options>\n", program);
+  print_info ("  Segments a coloured cloud into regions of similar colour (and surface "
+              "normal):\n  writes every input point, in input order, with its colour "
+              "and its region as\n  label (0: no region; 1, 2, ... by decreasing "
+              "size). The input needs an rgb or\n  rgba field.\n");
+  print_info ("  where options are:\n");
+  print_info ("    -radius R   = largest distance between neighbours (default: %g "
+              "times the\n                  cloud's spacing, the %g quantile of the "
+              "nearest-neighbour distances)\n",
+              RegionSettings::RADIUS_PER_SPACING,
+              RegionSettings::SPACING_QUANTILE);
+  print_info ("    -point-color DE = largest colour difference of neighbours in a "
+              "patch, in CIELAB\n                  Delta E76 (default %g)\n",
+              ToolRegionGrowing::DEFAULT_COLOR_THRESHOLD);
+  print_info (
+      "    -color DE   = largest difference of the mean colours of adjacent "
+      "patches in a\n                  region, in Delta E76 (default: -auto)\n");
+  print_info ("    -auto       = choose that threshold from the persistence of the "
+              "regions, up to\n                  Delta E %g (the default)\n",
+              RegionSettings::MAX_AUTO_COLOR_THRESHOLD);
+  print_info ("    -angle DEG  = largest angle between the normals of neighbours in a "
+              "region\n                  (default %g)\n",
+              ToolRegionGrowing::DEFAULT_NORMAL_ANGLE);
+  print_info ("    -no-normals = compare colours only; otherwise the input's normals "
+              "are used, or\n                  estimated from the neighbours within "
+              "the radius when it has none\n");
+  print_info ("    -min N      = smallest region, in points; smaller ones join their "
+              "most similar\n                  neighbour (default %u)\n",
+              RegionSettings{}.min_size);
+  print_info ("    -memory M   = refuse neighbour graphs over M MiB (default: half of "
+              "the memory)\n");
+  print_info ("    -svg F.svg  = also draw the H0 barcode over Delta E (with the "
+              "threshold)\n");
+  print_info ("    -png F.png  = also draw the regions, one colour each (no region: "
+              "grey)\n");
+  print_info ("  Outputs are written only when the whole run succeeds.\n");
+}
+
+/** Reads the command line into \a options.
+ * \throws pcl::BadArgumentException naming the option at fault */
+void
+parseOptions (int argc, char** argv, Options& options)
+{
+  RegionSettings& settings = options.settings;
+  bool automatic = false, no_normals = false;
+  long min_size = settings.min_size;
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addNumber (
+      "-radius", settings.radius, pcl::tda::NumberRange::above (0.0, 1e9));
+  command_line.addNumber (
+      "-point-color", settings.point_color, pcl::tda::NumberRange::above (0.0, 1e3));
+  command_line.addNumber (
+      "-color", settings.region_color, pcl::tda::NumberRange::above (0.0, 1e3));
+  command_line.addSwitch ("-auto", automatic);
+  command_line.addNumber (
+      "-angle", settings.angle, pcl::tda::NumberRange::above (0.0, 90.0));
+  command_line.addSwitch ("-no-normals", no_normals);
+  command_line.addInteger ("-min", min_size, 1, std::numeric_limits<int>::max());
+  command_line.addNumber (
+      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+  command_line.addText ("-svg", options.barcode_svg);
+  command_line.addText ("-png", options.picture_png);
+  const std::vector<std::string> files = command_line.parse (argc, argv);
+  pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".pcd"}});
+  options.input = files[0];
+  options.output = files[1];
+  if (automatic && command_line.given ("-color"))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "-color and -auto exclude each other: give one.");
+  if (command_line.given ("-angle") && no_normals)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "-angle has no use with -no-normals.");
+  settings.use_normals = !no_normals;
+  settings.min_size = static_cast<pcl::uindex_t> (min_size);
+}
+
+/** True when the cloud has field \a name. */
+bool
+hasField (const pcl::PCLPointCloud2& blob, const std::string& name)
+{
+  return std::any_of (blob.fields.begin(), blob.fields.end(), [&name] (const auto& f) {
+    return f.name == name;
+  });
+}
+
+/** The normals of the input: true with \a normals null when it has none (they are
+ * then estimated from the neighbour graph), false after an error. */
+bool
+inputNormals (const pcl::PCLPointCloud2& blob,
+              const Cloud& cloud,
+              Normals::Ptr& normals,
+              pcl::tda::ToolConsole& console)
+{
+  normals.reset();
+  if (hasField (blob, "normal_x") && hasField (blob, "normal_y") &&
+      hasField (blob, "normal_z")) {
+    console.beginStep ("Normals", "from the input");
+    normals.reset (new Normals);
+    pcl::fromPCLPointCloud2 (blob, *normals);
+    std::size_t invalid = 0;
+    for (std::size_t i = 0; i < cloud.size(); ++i)
+      invalid += pcl::isXYZFinite (cloud[i]) && !pcl::isNormalFinite ((*normals)[i]);
+    if (invalid > 0) {
+      console.error (std::to_string (invalid) +
+                     " points with a finite position have "
+                     "a non-finite normal in the input: use -no-normals, or remove "
+                     "the normal fields to have them estimated.");
+      return false;
+    }
+    console.endStep (std::to_string (normals->size()) + " normals");
+  }
+  return true;
+}
+
+/** The mean input colour of a region. */
+std::array<double, 3>
+meanColor (const Cloud& cloud, const pcl::Indices& indices)
+{
+  std::array<double, 3> sum{0.0, 0.0, 0.0};
+  for (const auto index : indices) {
+    sum[0] += cloud[index].r;
+    sum[1] += cloud[index].g;
+    sum[2] += cloud[index].b;
+  }
+  for (double& channel : sum)
+    channel /= static_cast<double> (indices.size());
+  return sum;
+}
+
+int
+run (const Options& options, pcl::tda::ToolConsole& console)
+{
+  pcl::tda::ToolOutputs outputs (options.input,
+                                 {{"output", options.output},
+                                  {"-svg", options.barcode_svg},
+                                  {"-png", options.picture_png}});
+  pcl::PCLPointCloud2 blob;
+  console.beginStep ("Loading", options.input);
+  try {
+    pcl::tda::loadPointCloudFile (options.input, blob);
+  }
+  catch (const pcl::PCLException& failure) {
+    console.error ("Cannot read the PCD file: " + pcl::tda::errorMessage (failure));
+    return 1;
+  }
+  if (!hasField (blob, "rgb") && !hasField (blob, "rgba")) {
+    console.error (options.input +
+                   " has no colour (no rgb or rgba field): "
+                   "pcl_tda_regions segments by colour. For segmentation by distance "
+                   "alone, use pcl_tda_segment.");
+    return 1;
+  }
+  Cloud::Ptr cloud (new Cloud);
+  if (!blob.data.empty())
+    pcl::fromPCLPointCloud2 (blob, *cloud);
+  console.endStep (std::to_string (cloud->size()) + " points" +
+                   (cloud->isOrganized() ? " (organized)" : ""));
+
+  const RegionSettings& settings = options.settings;
+  console.beginStep ("Radius");
+  const double radius = pcl::tda::regionRadius (settings, *cloud);
+  if (!(radius > 0.0)) {
+    console.error ("The cloud has fewer than two distinct finite points: no spacing "
+                   "to take the radius from. Give -radius.");
+    return 1;
+  }
+  std::ostringstream chosen;
+  chosen << radius << (settings.radius > 0.0 ? " (given)" : " (from the spacing)");
+  console.endStep (chosen.str());
+
+  Normals::Ptr normals;
+  if (settings.use_normals && !inputNormals (blob, *cloud, normals, console))
+    return 1;
+  ToolRegionGrowing growing;
+  growing.setInputCloud (cloud);
+  pcl::tda::configureRegionGrowing (growing, settings, radius, normals);
+  if (options.memory_mib > 0.0)
+    growing.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
+
+  console.beginStep ("Growing regions");
+  std::vector<pcl::PointIndices> regions;
+  {
+    pcl::tda::ProgressBar bar ("  neighbour graph");
+    growing.setProgressCallback (
+        [&bar] (std::size_t done, std::size_t total) { bar.update (done, total); });
+    growing.extract (regions);
+  }
+  if (growing.getPersistenceDiagram().empty()) {
+    console.error ("Region growing failed (see above). For a neighbour graph over the "
+                   "memory limit: set a larger one with -memory M (MiB), or a smaller "
+                   "-radius.");
+    return 1;
+  }
+  std::ostringstream grown;
+  grown << regions.size() << " regions at Delta E "
+        << growing.getChosenRegionColorThreshold()
+        << (settings.region_color == 0.0 ? " (chosen)" : "") << ", radius " << radius
+        << ", " << growing.getNumEdges() << " edges";
+  console.endStep (grown.str());
+
+  pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+  pcl::copyPointCloud (*cloud, labelled);
+  for (auto& point : labelled)
+    point.label = 0;
+  const std::vector<pcl::tda::RegionLifetime>& lifetimes = growing.getRegionLifetimes();
+  constexpr std::size_t MAX_LINES = 30;
+  for (std::size_t k = 0; k < regions.size(); ++k) {
+    for (const auto index : regions[k].indices)
+      labelled[index].label = static_cast<std::uint32_t> (k + 1);
+    if (k < MAX_LINES) {
+      const auto mean = meanColor (*cloud, regions[k].indices);
+      print_info ("  region %zu: %zu points, mean colour (%.0f, %.0f, %.0f), Delta E "
+                  "birth %.2f death %.2f\n",
+                  k + 1,
+                  regions[k].indices.size(),
+                  mean[0],
+                  mean[1],
+                  mean[2],
+                  lifetimes[k].birth,
+                  lifetimes[k].death);
+    }
+  }
+  if (regions.size() > MAX_LINES)
+    print_info ("  ... and %zu smaller regions\n", regions.size() - MAX_LINES);
+
+  console.beginStep ("Saving", options.output);
+  try {
+    pcl::tda::savePointCloudFile (outputs.temporary (options.output), labelled);
+    if (!options.barcode_svg.empty()) {
+      pcl::tda::PlotOptions plot;
+      std::ostringstream title;
+      title << options.input << ": regions of " << settings.min_size
+            << "+ points over Delta E, " << regions.size() << " regions";
+      plot.title = title.str();
+      plot.unit = "Delta E";
+      plot.cut = growing.getChosenRegionColorThreshold();
+      plot.max_value =
+          std::max (2.0 * plot.cut, RegionSettings::MAX_AUTO_COLOR_THRESHOLD);
+      pcl::tda::saveBarcodeSVG (
+          outputs.temporary (options.barcode_svg), growing.getRegionBarcode(), plot);
+    }
+    if (!options.picture_png.empty())
+      pcl::tda::saveCloudPicture (outputs.temporary (options.picture_png), labelled);
+    outputs.commit();
+  }
+  catch (const std::exception& error) {
+    console.error (pcl::tda::errorMessage (error));
+    return 1;
+  }
+  console.endStep (std::to_string (labelled.size()) + " labelled points");
+  return 0;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  return pcl::tda::runTool<Options> (
+      argc,
+      argv,
+      "Colour region segmentation by topological persistence.",
+      printHelp,
+      parseOptions,
+      run);
+}

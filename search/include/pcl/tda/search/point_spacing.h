@@ -1,0 +1,62 @@
+#pragma once
+
+#include <pcl/common/point_tests.h>
+#include <pcl/search/kdtree.h>
+#include <pcl/point_cloud.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief The spacing of a cloud's points: the \a quantile (in (0, 1]) of the
+ * distances from each point to its nearest other point, over the finite points (at
+ * most \a max_samples of them, evenly spread in the input order, so that the cost is
+ * bounded on large clouds). Points at the same position count at the next distinct
+ * one. 0 when there are fewer than two distinct finite points.
+ *
+ * The median (quantile 0.5) is the typical sampling distance; a higher quantile
+ * follows the sparser parts, e.g. the far side of a depth frame. */
+template <typename PointT>
+double
+pointSpacing (const pcl::PointCloud<PointT>& cloud,
+              double quantile = 0.5,
+              std::size_t max_samples = 2000)
+{
+  typename pcl::PointCloud<PointT>::Ptr finite (new pcl::PointCloud<PointT>);
+  for (const PointT& point : cloud)
+    if (pcl::isXYZFinite (point))
+      finite->push_back (point);
+  if (finite->size() < 2)
+    return 0.0;
+  pcl::search::KdTree<PointT> tree;
+  tree.setInputCloud (finite);
+  const std::size_t stride = std::max<std::size_t> (1, finite->size() / max_samples);
+  std::vector<double> spacings;
+  pcl::Indices neighbors;
+  std::vector<float> squared_distances;
+  for (std::size_t i = 0; i < finite->size(); i += stride) {
+    // Enough neighbours to step over a few duplicates of the point.
+    const int k = static_cast<int> (std::min<std::size_t> (8, finite->size()));
+    tree.nearestKSearch ((*finite)[i], k, neighbors, squared_distances);
+    const auto next = std::find_if (squared_distances.begin(),
+                                    squared_distances.end(),
+                                    [] (float d) { return d > 0.0f; });
+    if (next != squared_distances.end())
+      spacings.push_back (std::sqrt (static_cast<double> (*next)));
+  }
+  if (spacings.empty())
+    return 0.0;
+  const auto rank = static_cast<std::size_t> (std::max (
+      std::ceil (quantile * static_cast<double> (spacings.size())) - 1.0, 0.0));
+  std::nth_element (spacings.begin(),
+                    spacings.begin() + std::min (rank, spacings.size() - 1),
+                    spacings.end());
+  return spacings[std::min (rank, spacings.size() - 1)];
+}
+
+} // namespace tda
+} // namespace pcl

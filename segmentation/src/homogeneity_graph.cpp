@@ -1,0 +1,174 @@
+#include <pcl/common/eigen.h>
+#include <pcl/tda/segmentation/homogeneity_graph.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+
+namespace pcl {
+namespace tda {
+namespace {
+
+/** How many times the typical change (the noise) a colour may change at most. */
+constexpr float NOISE_CHANGES = 3.0f;
+
+} // namespace
+
+bool
+neighborGraph (const std::vector<Point3d>& points,
+               double radius,
+               unsigned int threads,
+               const MemoryBudget& budget,
+               std::vector<FilteredEdge>& edges,
+               ComplexSize& size,
+               const ProgressCallback& progress)
+{
+  edges.clear();
+  const UniformGrid grid (points, radius, threads);
+  // The count and the fill pass are each half of the work.
+  const auto half = [&progress] (std::size_t pass) -> ProgressCallback {
+    if (!progress)
+      return {};
+    return [&progress, pass] (std::size_t done, std::size_t total) {
+      progress (pass * total + done, 2 * total);
+    };
+  };
+  RadiusEdgeCounts counts;
+  if (!countRadiusEdgesWithinBudget (grid,
+                                     points,
+                                     radius,
+                                     AcceptAllPairs{},
+                                     threads,
+                                     budget,
+                                     counts,
+                                     size,
+                                     half (0)))
+    return false;
+  edges = listRadiusEdges (
+      grid, points, radius, AcceptAllPairs{}, counts.offsets, threads, half (1));
+  return true;
+}
+
+NeighborLists
+neighborLists (std::size_t num_vertices, const std::vector<FilteredEdge>& graph)
+{
+  NeighborLists lists;
+  lists.offsets.assign (num_vertices + 1, 0);
+  for (const FilteredEdge& edge : graph) {
+    ++lists.offsets[edge.source + 1];
+    ++lists.offsets[edge.target + 1];
+  }
+  std::partial_sum (lists.offsets.begin(), lists.offsets.end(), lists.offsets.begin());
+  lists.neighbors.resize (lists.offsets.back());
+  std::vector<std::size_t> next (lists.offsets.begin(), lists.offsets.end() - 1);
+  for (const FilteredEdge& edge : graph) {
+    lists.neighbors[next[edge.source]++] = edge.target;
+    lists.neighbors[next[edge.target]++] = edge.source;
+  }
+  return lists;
+}
+
+std::vector<Eigen::Vector3f>
+neighborNormals (const std::vector<Point3d>& points,
+                 const NeighborLists& lists,
+                 unsigned int threads)
+{
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::vector<Eigen::Vector3f> normals (points.size(), Eigen::Vector3f (nan, nan, nan));
+  const auto num_vertices = static_cast<std::int64_t> (points.size());
+#pragma omp parallel for schedule(dynamic, 256) num_threads(resolveThreads(threads))
+  for (std::int64_t v = 0; v < num_vertices; ++v) {
+    const std::size_t begin = lists.offsets[v], end = lists.offsets[v + 1];
+    if (end - begin < 2)
+      continue;
+    // Covariance about the vertex itself (shifting by a point of the set keeps the
+    // sums small and the covariance exact).
+    const Point3d& origin = points[v];
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d products = Eigen::Matrix3d::Zero();
+    for (std::size_t k = begin; k < end; ++k) {
+      const Point3d& p = points[lists.neighbors[k]];
+      const Eigen::Vector3d d (p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]);
+      sum += d;
+      products += d * d.transpose();
+    }
+    const double n = static_cast<double> (end - begin + 1);
+    const Eigen::Matrix3f covariance =
+        ((products - sum * sum.transpose() / n) / n).cast<float>();
+    float eigenvalue = 0.0f;
+    Eigen::Vector3f normal;
+    pcl::eigen33 (covariance, eigenvalue, normal);
+    const Eigen::Vector3f position (static_cast<float> (origin[0]),
+                                    static_cast<float> (origin[1]),
+                                    static_cast<float> (origin[2]));
+    if (normal.dot (-position) < 0.0f) // towards the viewpoint at the origin
+      normal = -normal;
+    normals[v] = normal.normalized();
+  }
+  return normals;
+}
+
+std::vector<LabColor>
+medianSmoothedColors (const std::vector<LabColor>& colors,
+                      const NeighborLists& lists,
+                      float max_change,
+                      unsigned int threads)
+{
+  std::vector<LabColor> medians (colors.size());
+  std::vector<float> changes (colors.size());
+  const auto num_vertices = static_cast<std::int64_t> (colors.size());
+#pragma omp parallel num_threads(resolveThreads(threads))
+  {
+    std::vector<float> values;
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t v = 0; v < num_vertices; ++v) {
+      const std::size_t begin = lists.offsets[v], end = lists.offsets[v + 1];
+      LabColor& median = medians[v];
+      for (float LabColor::*channel : {&LabColor::l, &LabColor::a, &LabColor::b}) {
+        values.assign (1, colors[v].*channel);
+        for (std::size_t k = begin; k < end; ++k)
+          values.push_back (colors[lists.neighbors[k]].*channel);
+        const auto middle = values.begin() + values.size() / 2;
+        std::nth_element (values.begin(), middle, values.end());
+        median.*channel = *middle;
+      }
+      changes[v] = deltaE76 (median, colors[v]);
+    }
+  }
+  // The noise: the median change; a colour changes by up to a few times it.
+  std::vector<float> sorted (changes);
+  std::nth_element (sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+  const float limit =
+      sorted.empty() ? max_change
+                     : std::max (max_change, NOISE_CHANGES * sorted[sorted.size() / 2]);
+  for (std::size_t v = 0; v < colors.size(); ++v)
+    if (changes[v] > limit)
+      medians[v] = colors[v];
+  return medians;
+}
+
+void
+valueByHomogeneity (std::vector<FilteredEdge>& graph,
+                    const std::vector<LabColor>& colors,
+                    const std::vector<Eigen::Vector3f>& normals,
+                    double min_cos_angle,
+                    unsigned int threads)
+{
+  const bool with_normals = !normals.empty();
+  const auto num_edges = static_cast<std::int64_t> (graph.size());
+#pragma omp parallel for schedule(static) num_threads(resolveThreads(threads))
+  for (std::int64_t e = 0; e < num_edges; ++e) {
+    FilteredEdge& edge = graph[e];
+    // A NaN normal fails no test: the comparison is false.
+    const bool similar_normals =
+        !with_normals ||
+        !(std::abs (normals[edge.source].dot (normals[edge.target])) < min_cos_angle);
+    edge.value = similar_normals ? deltaE76 (colors[edge.source], colors[edge.target])
+                                 : std::numeric_limits<double>::infinity();
+  }
+}
+
+} // namespace tda
+} // namespace pcl

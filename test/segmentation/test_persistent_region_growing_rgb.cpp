@@ -1,0 +1,381 @@
+// PersistentRegionGrowingRGB on clouds whose regions are known by construction:
+// coloured quadrants of a plane, a fold whose two faces only the normals separate,
+// shuffled inputs and thread counts, the thesis' filtration by distance, and its
+// refusals of bad input.
+
+#include <pcl/tda/common/cielab.h>
+#include <pcl/tda/segmentation/persistent_region_growing_rgb.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
+#include <set>
+#include <vector>
+
+using namespace pcl::tda;
+using Cloud = pcl::PointCloud<pcl::PointXYZRGB>;
+using Normals = pcl::PointCloud<pcl::Normal>;
+using RegionGrowing = PersistentRegionGrowingRGB<pcl::PointXYZRGB, pcl::Normal>;
+
+namespace {
+
+constexpr float SPACING = 0.005f;
+
+/** The four colours of the quadrants: the first two 13.8 Delta E apart, the others
+ * 76 to 119. */
+const std::uint8_t QUADRANT_COLORS[4][3] = {
+    {200, 60, 50}, {200, 90, 60}, {60, 90, 200}, {70, 160, 80}};
+/** The same with the first two 25.3 Delta E apart. */
+const std::uint8_t DISTINCT_COLORS[4][3] = {
+    {200, 60, 50}, {200, 110, 60}, {60, 90, 200}, {70, 160, 80}};
+
+/** A 40 x 40 grid of spacing 5 mm in the plane z = 0, jittered, each quadrant in its
+ * colour with Gaussian noise of \a noise levels; \a truth gets the quadrant of each
+ * point. Normals (0, 0, +-1) at random signs. */
+void
+quadrantCloud (Cloud& cloud,
+               Normals& normals,
+               std::vector<int>& truth,
+               float noise,
+               std::uint32_t seed,
+               const std::uint8_t (*colors)[3] = QUADRANT_COLORS)
+{
+  std::mt19937 random (seed);
+  std::normal_distribution<float> color_noise (0.0f, noise);
+  std::uniform_real_distribution<float> jitter (-0.2f * SPACING, 0.2f * SPACING);
+  std::bernoulli_distribution flip (0.5);
+  cloud.clear();
+  normals.clear();
+  truth.clear();
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j) {
+      const int quadrant = (i >= 20) + 2 * (j >= 20);
+      pcl::PointXYZRGB point;
+      point.x = i * SPACING + jitter (random);
+      point.y = j * SPACING + jitter (random);
+      point.z = 0.0f;
+      const auto channel = [&] (std::uint8_t value) {
+        return static_cast<std::uint8_t> (
+            std::clamp (std::lround (value + color_noise (random)), 0L, 255L));
+      };
+      point.r = channel (colors[quadrant][0]);
+      point.g = channel (colors[quadrant][1]);
+      point.b = channel (colors[quadrant][2]);
+      cloud.push_back (point);
+      pcl::Normal normal (0.0f, 0.0f, flip (random) ? 1.0f : -1.0f);
+      normals.push_back (normal);
+      truth.push_back (quadrant);
+    }
+}
+
+/** The regions as a set of sets of input indices. */
+std::set<std::vector<pcl::index_t>>
+asSets (const std::vector<pcl::PointIndices>& regions)
+{
+  std::set<std::vector<pcl::index_t>> sets;
+  for (const auto& region : regions)
+    sets.insert (region.indices);
+  return sets;
+}
+
+std::vector<pcl::PointIndices>
+grow (RegionGrowing& growing, const Cloud::ConstPtr& cloud)
+{
+  growing.setInputCloud (cloud);
+  std::vector<pcl::PointIndices> regions;
+  growing.extract (regions);
+  return regions;
+}
+
+} // namespace
+
+/** The share of the points whose region is that of the truth, with each region
+ * matched to the quadrant it overlaps most. */
+double
+agreement (const std::vector<pcl::PointIndices>& regions, const std::vector<int>& truth)
+{
+  std::size_t agreeing = 0;
+  for (const auto& region : regions) {
+    std::map<int, std::size_t> overlap;
+    for (const auto index : region.indices)
+      ++overlap[truth[index]];
+    std::size_t best = 0;
+    for (const auto& [quadrant, count] : overlap)
+      best = std::max (best, count);
+    agreeing += best;
+  }
+  return static_cast<double> (agreeing) / static_cast<double> (truth.size());
+}
+
+// The four quadrants exactly, noise-free and with colour noise, with and without the
+// second filtration, and with the automatic threshold; raw colours (the median
+// filter may move a point at a corner where three colours meet).
+TEST (PersistentRegionGrowingRGB, FindsTheColouredQuadrants)
+{
+  for (const float noise : {0.0f, 3.0f}) {
+    Cloud::Ptr cloud (new Cloud);
+    Normals::Ptr normals (new Normals);
+    std::vector<int> truth;
+    quadrantCloud (*cloud, *normals, truth, noise, 5);
+    std::set<std::vector<pcl::index_t>> expected;
+    for (int q = 0; q < 4; ++q) {
+      std::vector<pcl::index_t> members;
+      for (std::size_t i = 0; i < truth.size(); ++i)
+        if (truth[i] == q)
+          members.push_back (static_cast<pcl::index_t> (i));
+      expected.insert (members);
+    }
+    for (const int mode : {0, 1, 2}) {
+      RegionGrowing growing;
+      growing.setMaxDistance (1.5 * SPACING);
+      growing.setInputNormals (normals);
+      growing.setMinClusterSize (20);
+      growing.setColorSmoothing (false);
+      growing.setRegionColorThreshold (mode == 0 ? 0.0 : 8.0);
+      growing.setAutoColorThreshold (mode == 2);
+      if (mode == 2)
+        growing.setRegionColorThreshold (40.0);
+      const auto regions = grow (growing, cloud);
+      EXPECT_EQ (asSets (regions), expected) << "noise " << noise << " mode " << mode;
+      ASSERT_EQ (growing.getRegionLifetimes().size(), regions.size());
+      EXPECT_EQ (growing.getNumSkippedPoints(), 0u);
+      if (mode == 2) {
+        EXPECT_GT (growing.getChosenRegionColorThreshold(), 2.3);
+        EXPECT_LT (growing.getChosenRegionColorThreshold(), 10.0);
+      }
+    }
+  }
+}
+
+// With the median filter and strong colour noise (RGB sigma 8, about 6 Delta E per
+// point): four regions 25 Delta E or more apart, at most a few points astray.
+TEST (PersistentRegionGrowingRGB, FiltersStrongColourNoise)
+{
+  for (const std::uint32_t seed : {1u, 2u, 3u}) {
+    Cloud::Ptr cloud (new Cloud);
+    Normals::Ptr normals (new Normals);
+    std::vector<int> truth;
+    quadrantCloud (*cloud, *normals, truth, 8.0f, seed, DISTINCT_COLORS);
+    RegionGrowing growing;
+    growing.setMaxDistance (2.0 * SPACING);
+    growing.setInputNormals (normals);
+    growing.setMinClusterSize (20);
+    growing.setAutoColorThreshold (true);
+    growing.setRegionColorThreshold (40.0);
+    const auto regions = grow (growing, cloud);
+    EXPECT_EQ (regions.size(), 4u) << "seed " << seed;
+    EXPECT_GT (agreement (regions, truth), 0.99) << "seed " << seed;
+  }
+}
+
+// Same regions, in the same order, for shuffled inputs and 1 or 2 threads.
+TEST (PersistentRegionGrowingRGB, IndependentOfInputOrderAndThreads)
+{
+  Cloud::Ptr cloud (new Cloud);
+  Normals::Ptr normals (new Normals);
+  std::vector<int> truth;
+  quadrantCloud (*cloud, *normals, truth, 8.0f, 9);
+  RegionGrowing reference;
+  reference.setMaxDistance (2.0 * SPACING);
+  reference.setInputNormals (normals);
+  reference.setMinClusterSize (10);
+  reference.setAutoColorThreshold (true);
+  reference.setRegionColorThreshold (40.0);
+  reference.setNumberOfThreads (1);
+  const auto expected = grow (reference, cloud);
+  ASSERT_GE (expected.size(), 4u);
+
+  std::mt19937 random (1);
+  for (int trial = 0; trial < 6; ++trial) {
+    std::vector<std::size_t> order (cloud->size());
+    std::iota (order.begin(), order.end(), 0);
+    std::shuffle (order.begin(), order.end(), random);
+    Cloud::Ptr shuffled (new Cloud);
+    Normals::Ptr shuffled_normals (new Normals);
+    for (const std::size_t i : order) {
+      shuffled->push_back ((*cloud)[i]);
+      shuffled_normals->push_back ((*normals)[i]);
+    }
+    RegionGrowing growing;
+    growing.setMaxDistance (2.0 * SPACING);
+    growing.setInputNormals (shuffled_normals);
+    growing.setMinClusterSize (10);
+    growing.setAutoColorThreshold (true);
+    growing.setRegionColorThreshold (40.0);
+    growing.setNumberOfThreads (1 + trial % 2);
+    const auto regions = grow (growing, shuffled);
+    ASSERT_EQ (regions.size(), expected.size());
+    for (std::size_t k = 0; k < regions.size(); ++k) {
+      std::vector<pcl::index_t> mapped;
+      for (const auto index : regions[k].indices)
+        mapped.push_back (static_cast<pcl::index_t> (order[index]));
+      std::sort (mapped.begin(), mapped.end());
+      EXPECT_EQ (mapped, expected[k].indices) << "trial " << trial << " region " << k;
+    }
+    EXPECT_EQ (growing.getChosenRegionColorThreshold(),
+               reference.getChosenRegionColorThreshold());
+  }
+}
+
+// A fold of one colour: two perpendicular faces. With normals, two regions (the
+// angle test cuts the fold); without, one.
+TEST (PersistentRegionGrowingRGB, NormalsSeparateTheFacesOfAFold)
+{
+  Cloud::Ptr cloud (new Cloud);
+  Normals::Ptr normals (new Normals);
+  for (int i = 0; i < 30; ++i)
+    for (int j = 0; j < 30; ++j) {
+      pcl::PointXYZRGB point;
+      point.r = 120, point.g = 120, point.b = 60;
+      point.x = i * SPACING, point.y = j * SPACING, point.z = 0.0f; // floor
+      cloud->push_back (point);
+      normals->push_back (pcl::Normal (0.0f, 0.0f, 1.0f));
+      point.x = -SPACING, point.y = j * SPACING, point.z = (i + 1) * SPACING; // wall
+      cloud->push_back (point);
+      normals->push_back (pcl::Normal (1.0f, 0.0f, 0.0f));
+    }
+  RegionGrowing growing;
+  growing.setMaxDistance (1.5 * SPACING);
+  growing.setInputNormals (normals);
+  growing.setNormalAngleThreshold (30.0);
+  EXPECT_EQ (grow (growing, cloud).size(), 2u);
+  RegionGrowing colour_only;
+  colour_only.setMaxDistance (1.5 * SPACING);
+  EXPECT_EQ (grow (colour_only, cloud).size(), 1u);
+}
+
+// The thesis' filtration by distance gives the same regions; its diagram has one
+// essential bar per component of the similar pairs.
+TEST (PersistentRegionGrowingRGB, DistanceFiltrationGivesTheSameRegions)
+{
+  Cloud::Ptr cloud (new Cloud);
+  Normals::Ptr normals (new Normals);
+  std::vector<int> truth;
+  quadrantCloud (*cloud, *normals, truth, 0.0f, 3);
+  RegionGrowing by_color, by_distance;
+  for (RegionGrowing* growing : {&by_color, &by_distance}) {
+    growing->setMaxDistance (1.5 * SPACING);
+    growing->setRegionColorThreshold (0.0);
+  }
+  by_distance.setFiltration (RegionGrowing::Filtration::DISTANCE);
+  by_distance.setFiltrationSteps (10);
+  const auto expected = grow (by_color, cloud);
+  EXPECT_EQ (asSets (grow (by_distance, cloud)), asSets (expected));
+  std::size_t essential = 0;
+  for (const auto& interval : by_distance.getPersistenceDiagram()) {
+    essential += interval.isEssential();
+    if (!interval.isEssential()) {
+      // Stepped: deaths are multiples of max distance / 10.
+      const double steps = interval.death / (0.15 * SPACING);
+      EXPECT_NEAR (steps, std::round (steps), 1e-6);
+    }
+  }
+  EXPECT_EQ (essential, 4u);
+}
+
+// Small regions labelled as noise instead of merged.
+TEST (PersistentRegionGrowingRGB, SmallRegionsAsNoise)
+{
+  Cloud::Ptr cloud (new Cloud);
+  Normals::Ptr normals (new Normals);
+  std::vector<int> truth;
+  quadrantCloud (*cloud, *normals, truth, 0.0f, 3);
+  (*cloud)[0].r = 0, (*cloud)[0].g = 255, (*cloud)[0].b = 255; // a cyan speck
+  RegionGrowing growing;
+  growing.setMaxDistance (1.5 * SPACING);
+  growing.setMinClusterSize (5);
+  growing.setColorSmoothing (false);
+  std::size_t covered = 0;
+  for (const auto& region : grow (growing, cloud))
+    covered += region.indices.size();
+  EXPECT_EQ (covered, cloud->size());
+  growing.setMergeSmallRegions (false);
+  covered = 0;
+  for (const auto& region : grow (growing, cloud))
+    covered += region.indices.size();
+  EXPECT_EQ (covered, cloud->size() - 1);
+}
+
+// Bad input: clear errors, no regions.
+TEST (PersistentRegionGrowingRGB, RefusesBadInput)
+{
+  Cloud::Ptr cloud (new Cloud);
+  Normals::Ptr normals (new Normals);
+  std::vector<int> truth;
+  quadrantCloud (*cloud, *normals, truth, 0.0f, 3);
+  const auto refused = [&cloud] (const std::function<void (RegionGrowing&)>& set) {
+    RegionGrowing growing;
+    growing.setMaxDistance (1.5 * SPACING);
+    set (growing);
+    return grow (growing, cloud).empty() && !growing.getColoredCloud();
+  };
+  EXPECT_FALSE (refused ([] (RegionGrowing&) {}));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setMaxDistance (0.0); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setMaxDistance (NAN); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setColorThreshold (0.0); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setColorThreshold (-1.0); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setRegionColorThreshold (-1.0); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) {
+    g.setAutoColorThreshold (true);
+    g.setRegionColorThreshold (0.0);
+  }));
+  EXPECT_TRUE (refused ([&normals] (RegionGrowing& g) {
+    g.setInputNormals (normals);
+    g.setNormalAngleThreshold (0.0);
+  }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) {
+    g.setMinClusterSize (10);
+    g.setMaxClusterSize (5);
+  }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setMemoryLimit (1000); }));
+  Normals::Ptr short_normals (new Normals (*normals));
+  short_normals->resize (10);
+  EXPECT_TRUE (refused (
+      [&short_normals] (RegionGrowing& g) { g.setInputNormals (short_normals); }));
+  // NaN positions and normals: those points are left out, and counted.
+  Normals::Ptr nan_normals (new Normals (*normals));
+  (*nan_normals)[3].normal_x = NAN;
+  (*cloud)[7].x = NAN;
+  RegionGrowing growing;
+  growing.setMaxDistance (1.5 * SPACING);
+  growing.setInputNormals (nan_normals);
+  std::size_t covered = 0;
+  for (const auto& region : grow (growing, cloud))
+    covered += region.indices.size();
+  EXPECT_EQ (growing.getNumSkippedPoints(), 2u);
+  EXPECT_EQ (covered, cloud->size() - 2);
+  // An empty cloud.
+  RegionGrowing empty;
+  empty.setMaxDistance (1.0);
+  EXPECT_TRUE (grow (empty, Cloud::Ptr (new Cloud)).empty());
+}
+
+// getColoredCloud(): one colour per region, white elsewhere, input positions.
+TEST (PersistentRegionGrowingRGB, ColoredCloud)
+{
+  Cloud::Ptr cloud (new Cloud);
+  Normals::Ptr normals (new Normals);
+  std::vector<int> truth;
+  quadrantCloud (*cloud, *normals, truth, 0.0f, 3);
+  RegionGrowing growing;
+  growing.setMaxDistance (1.5 * SPACING);
+  const auto regions = grow (growing, cloud);
+  const auto colored = growing.getColoredCloud();
+  ASSERT_TRUE (colored);
+  ASSERT_EQ (colored->size(), cloud->size());
+  std::set<std::uint32_t> colors;
+  for (const auto& region : regions) {
+    const auto& first = (*colored)[region.indices.front()];
+    colors.insert (first.rgba);
+    for (const auto index : region.indices) {
+      EXPECT_EQ ((*colored)[index].rgba, first.rgba);
+      EXPECT_EQ ((*colored)[index].x, (*cloud)[index].x);
+    }
+  }
+  EXPECT_EQ (colors.size(), regions.size());
+}
