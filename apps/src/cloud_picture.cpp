@@ -159,13 +159,26 @@ labelColor (std::size_t label)
 void
 saveCloudPicture (const std::string& path,
                   const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
-                  PictureColors colors,
+                  const std::vector<PictureColors>& panels,
                   std::size_t width)
 {
-  const Picture picture =
-      cloud.width >= MIN_IMAGE_SIDE && cloud.height >= MIN_IMAGE_SIDE
-          ? drawOrganized (cloud, colors)
-          : drawProjected (cloud, colors, width);
+  // The panels side by side, 8 pixels apart, each drawn the same way.
+  constexpr std::size_t GAP = 8;
+  std::vector<Picture> drawn;
+  for (const PictureColors colors : panels)
+    drawn.push_back (cloud.width >= MIN_IMAGE_SIDE && cloud.height >= MIN_IMAGE_SIDE
+                         ? drawOrganized (cloud, colors)
+                         : drawProjected (cloud, colors, width));
+  if (drawn.empty())
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "A picture needs a panel.");
+  const std::size_t panel_width = drawn.front().width;
+  Picture picture (drawn.size() * (panel_width + GAP) - GAP, drawn.front().height, 255);
+  for (std::size_t k = 0; k < drawn.size(); ++k)
+    for (std::size_t y = 0; y < picture.height; ++y)
+      std::copy_n (drawn[k].rgb.begin() + 3 * y * panel_width,
+                   3 * panel_width,
+                   picture.rgb.begin() +
+                       3 * (y * picture.width + k * (panel_width + GAP)));
   replaceFileAtomically (path, [&picture] (const std::string& temporary) {
     pcl::io::saveRgbPNGFile (temporary,
                              picture.rgb.data(),

@@ -48,9 +48,10 @@ printHelp (const char* program)
   print_info ("  where options are:\n");
   print_info ("    -radius R   = largest distance between neighbours (default: %g "
               "times the\n                  cloud's spacing, the %g quantile of the "
-              "nearest-neighbour distances)\n",
+              "distances to the %zu-th\n                  nearest point)\n",
               RegionSettings::RADIUS_PER_SPACING,
-              RegionSettings::SPACING_QUANTILE);
+              RegionSettings::SPACING_QUANTILE,
+              RegionSettings::SPACING_NEIGHBOR);
   print_info ("    -point-color DE = largest colour difference of neighbours in a "
               "patch, in CIELAB\n                  Delta E76 (default %g)\n",
               ToolRegionGrowing::DEFAULT_COLOR_THRESHOLD);
@@ -73,8 +74,8 @@ printHelp (const char* program)
               "the memory)\n");
   print_info ("    -svg F.svg  = also draw the H0 barcode over Delta E (with the "
               "threshold)\n");
-  print_info ("    -png F.png  = also draw the regions, one colour each (no region: "
-              "grey)\n");
+  print_info ("    -png F.png  = also draw the cloud in its colours and in those of "
+              "its regions\n                  (no region: grey), side by side\n");
   print_info ("  Outputs are written only when the whole run succeeds.\n");
 }
 
@@ -282,7 +283,10 @@ run (const Options& options, pcl::tda::ToolConsole& console)
           outputs.temporary (options.barcode_svg), growing.getRegionBarcode(), plot);
     }
     if (!options.picture_png.empty())
-      pcl::tda::saveCloudPicture (outputs.temporary (options.picture_png), labelled);
+      pcl::tda::saveCloudPicture (
+          outputs.temporary (options.picture_png),
+          labelled,
+          {pcl::tda::PictureColors::POINTS, pcl::tda::PictureColors::LABELS});
     outputs.commit();
   }
   catch (const std::exception& error) {

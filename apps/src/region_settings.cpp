@@ -11,7 +11,8 @@ regionRadius (const RegionSettings& settings,
   if (settings.radius > 0.0)
     return settings.radius;
   return RegionSettings::RADIUS_PER_SPACING *
-         pointSpacing (cloud, RegionSettings::SPACING_QUANTILE);
+         pointSpacing (
+             cloud, RegionSettings::SPACING_QUANTILE, RegionSettings::SPACING_NEIGHBOR);
 }
 
 void

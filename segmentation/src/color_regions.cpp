@@ -393,10 +393,11 @@ ColorThresholdChoice
 chooseColorThreshold (const PersistenceDiagram& bars,
                       double floor,
                       double max_threshold,
-                      double gap_ratio)
+                      double gap_ratio,
+                      double fallback)
 {
   ColorThresholdChoice choice;
-  choice.threshold = max_threshold;
+  choice.threshold = std::min (fallback, max_threshold);
   if (!(floor > 0.0 && floor < max_threshold))
     return choice;
   // The region count changes at the births (+1) and deaths (-1) of the bars.
@@ -412,8 +413,9 @@ chooseColorThreshold (const PersistenceDiagram& bars,
   choice.low = chosen.low;
   choice.high = chosen.high;
   choice.num_regions = chosen.count;
-  choice.threshold = std::sqrt (choice.low * choice.high);
   choice.clear = chosen.clear;
+  if (chosen.high >= gap_ratio * chosen.low) // stable enough to be taken
+    choice.threshold = std::sqrt (choice.low * choice.high);
   return choice;
 }
 

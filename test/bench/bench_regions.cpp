@@ -5,11 +5,13 @@
 // (colour regions, depth camera view) at three noise levels, in the same run:
 // adjusted Rand index over all points, Hoover's counts at T = 0.8, regions out, and
 // time (normal estimation included where a method uses normals; medians of several
-// runs); then the time on the real coloured scans.
+// runs); then frames of the held-out depth camera generator, and the time on the
+// real coloured scans.
 //
 // Usage: pcl_tda_bench_regions [data_dir] [-scenes N] [-runs N] [-seed S]
 // The report goes to stdout as markdown tables; the last line is one JSON object.
 
+#include <pcl/common/point_tests.h>
 #include <pcl/features/normal_3d.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/search/kdtree.h>
@@ -18,6 +20,7 @@
 #include <pcl/tda/apps/region_settings.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/point_types.h>
 
@@ -53,11 +56,13 @@ struct Options {
 /** A segmentation method: the regions of a cloud. */
 using Method = std::function<std::vector<pcl::PointIndices> (const Cloud::Ptr&)>;
 
-/** Ours, as pcl_tda_regions runs with no options (radius, normals included). */
+/** Ours, as pcl_tda_regions runs with no options but -radius \a radius (0: none;
+ * radius, normals included). */
 std::vector<pcl::PointIndices>
-ours (const Cloud::Ptr& cloud)
+ours (const Cloud::Ptr& cloud, double radius = 0.0)
 {
-  const pcl::tda::RegionSettings settings;
+  pcl::tda::RegionSettings settings;
+  settings.radius = radius;
   pcl::tda::ToolRegionGrowing growing;
   growing.setInputCloud (cloud);
   pcl::tda::configureRegionGrowing (
@@ -65,6 +70,13 @@ ours (const Cloud::Ptr& cloud)
   std::vector<pcl::PointIndices> regions;
   growing.extract (regions);
   return regions;
+}
+
+/** Ours as pcl_tda_regions runs with no options. */
+std::vector<pcl::PointIndices>
+ourDefaults (const Cloud::Ptr& cloud)
+{
+  return ours (cloud);
 }
 
 /** pcl::RegionGrowingRGB with its defaults except those given (negative: default). */
@@ -295,8 +307,8 @@ main (int argc, char** argv)
       return scores;
     };
     std::vector<Summary> rows;
-    rows.push_back (
-        summarize ("ours (pcl_tda_regions defaults)", run_all (ours, options.runs)));
+    rows.push_back (summarize ("ours (pcl_tda_regions defaults)",
+                               run_all (ourDefaults, options.runs)));
     rows.push_back (summarize ("pcl::RegionGrowingRGB defaults",
                                run_all (pclRGB (-1, -1, -1, -1), options.runs)));
     rows.push_back (summarize ("pcl::RegionGrowingRGB tutorial (10, 6, 5, 600)",
@@ -346,7 +358,67 @@ main (int argc, char** argv)
          << ",\"ours_s\":" << rows[0].seconds
          << ",\"pcl_default_s\":" << rows[1].seconds << "}";
   }
-  json << "],\"scans\":[";
+  json << "],\"held_out\":";
+
+  // The held-out generator: organized depth frames of two-tone objects, table kept.
+  {
+    std::vector<Scene> frames;
+    for (std::size_t s = 0; s < std::min<std::size_t> (options.scenes, 4); ++s) {
+      pcl::tda::DepthCameraParameters parameters;
+      parameters.colour_regions = true;
+      parameters.remove_table = false;
+      parameters.colour_noise = 4.0f;
+      parameters.seed = options.seed + s;
+      const auto generated = pcl::tda::generateDepthCameraScene (parameters);
+      Scene frame;
+      frame.cloud.reset (new Cloud);
+      pcl::copyPointCloud (*generated.cloud, *frame.cloud);
+      // The finite points only (the lost pixels have no truth).
+      Cloud::Ptr finite (new Cloud);
+      for (std::size_t i = 0; i < frame.cloud->size(); ++i)
+        if (pcl::isXYZFinite ((*frame.cloud)[i])) {
+          finite->push_back ((*frame.cloud)[i]);
+          frame.truth.push_back (generated.region_labels[i]);
+        }
+      frame.cloud = finite;
+      frame.num_regions = generated.regions.size();
+      frames.push_back (frame);
+    }
+    const auto run_frames = [&] (const Method& method) {
+      std::vector<Score> scores;
+      for (const Scene& frame : frames)
+        scores.push_back (score (method, frame.cloud, frame.truth, 1));
+      return scores;
+    };
+    std::vector<Summary> rows;
+    rows.push_back (
+        summarize ("ours, -radius 0.01 (automatic threshold)",
+                   run_frames ([] (const Cloud::Ptr& c) { return ours (c, 0.01); })));
+    rows.push_back (summarize ("ours, defaults (radius from the spacing)",
+                               run_frames (ourDefaults)));
+    rows.push_back (summarize ("pcl::RegionGrowingRGB defaults",
+                               run_frames (pclRGB (-1, -1, -1, -1))));
+    rows.push_back (summarize ("pcl::RegionGrowingRGB (0.01, 6, 10, 20)",
+                               run_frames (pclRGB (0.01, 6, 10, 20))));
+    std::printf (
+        "\n### Held out: depth camera frames of two-tone objects (table kept, RGB "
+        "noise 4), %zu frames, finite points only\n\n",
+        frames.size());
+    std::printf ("| method | ARI | correct | over | under | regions | time (s) |\n"
+                 "|---|---|---|---|---|---|---|\n");
+    for (const Summary& row : rows)
+      std::printf ("| %s | %.3f | %.1f | %.1f | %.1f | %.1f | %.3f |\n",
+                   row.method.c_str(),
+                   row.ari,
+                   row.correct,
+                   row.over,
+                   row.under,
+                   row.regions,
+                   row.seconds);
+    json << "{\"ours_ari\":" << rows[0].ari << ",\"ours_default_ari\":" << rows[1].ari
+         << ",\"pcl_default_ari\":" << rows[2].ari << "}";
+  }
+  json << ",\"scans\":[";
 
   std::printf ("\n### Real scans: time (s), medians of %d runs\n\n", options.runs);
   std::printf (
@@ -360,7 +432,7 @@ main (int argc, char** argv)
       continue;
     }
     std::vector<std::int64_t> none (cloud->size(), 0);
-    const Score our = score (ours, cloud, none, options.runs);
+    const Score our = score (ourDefaults, cloud, none, options.runs);
     const Score theirs = score (pclRGB (-1, -1, -1, -1), cloud, none, options.runs);
     std::printf ("| %s | %zu | %.3f | %.3f | %.1f | %zu | %zu |\n",
                  name.c_str(),

@@ -272,7 +272,8 @@ TEST (ColorRegions, ChoosesTheMiddleOfTheLongestStep)
   // [2, 100]: 3 regions [2, 3), 2 regions [3, 40), 1 region [40, 100).
   const PersistenceDiagram bars{
       {0, 0.0, 3.0}, {0, 0.0, 40.0}, {0, 0.0, INF}, {0, 0.0, 1.0}};
-  const ColorThresholdChoice choice = chooseColorThreshold (bars, 2.0, 100.0, 1.5);
+  const ColorThresholdChoice choice =
+      chooseColorThreshold (bars, 2.0, 100.0, 1.5, 10.0);
   EXPECT_EQ (choice.num_regions, 2u);
   EXPECT_DOUBLE_EQ (choice.low, 3.0);
   EXPECT_DOUBLE_EQ (choice.high, 40.0);
@@ -280,12 +281,23 @@ TEST (ColorRegions, ChoosesTheMiddleOfTheLongestStep)
   EXPECT_TRUE (choice.clear);
   // No step of two regions long enough: the one-region step.
   const PersistenceDiagram close{{0, 0.0, 2.2}, {0, 0.0, INF}};
-  const ColorThresholdChoice whole = chooseColorThreshold (close, 2.0, 100.0, 1.5);
+  const ColorThresholdChoice whole =
+      chooseColorThreshold (close, 2.0, 100.0, 1.5, 10.0);
   EXPECT_EQ (whole.num_regions, 1u);
   EXPECT_DOUBLE_EQ (whole.low, 2.2);
+  EXPECT_NEAR (whole.threshold, std::sqrt (220.0), 1e-12);
+  // The count falls gradually (steps of a factor 1.2): the fallback, not clear.
+  PersistenceDiagram gradual{{0, 0.0, INF}};
+  for (double death = 2.0; death < 100.0; death *= 1.2)
+    gradual.push_back ({0, 0.0, death});
+  const ColorThresholdChoice guess =
+      chooseColorThreshold (gradual, 2.0, 100.0, 1.5, 10.0);
+  EXPECT_DOUBLE_EQ (guess.threshold, 10.0);
+  EXPECT_FALSE (guess.clear);
   // Two splits of similar length: not clear.
   const PersistenceDiagram twice{{0, 0.0, 4.0}, {0, 0.0, 8.0}, {0, 0.0, INF}};
-  const ColorThresholdChoice unclear = chooseColorThreshold (twice, 2.0, 8.0, 1.5);
+  const ColorThresholdChoice unclear =
+      chooseColorThreshold (twice, 2.0, 8.0, 1.5, 10.0);
   EXPECT_EQ (unclear.num_regions, 3u);
   EXPECT_FALSE (unclear.clear);
 }

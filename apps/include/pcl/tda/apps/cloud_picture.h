@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace pcl {
 namespace tda {
@@ -24,8 +25,9 @@ enum class PictureColors {
   POINTS
 };
 
-/** \brief Draws a labelled cloud as a PNG picture, each point in the colour of its
- * label (labelColor()) or its own, atomically. An organized cloud (at least 16 x 16) is
+/** \brief Draws a labelled cloud as a PNG picture of one or more panels side by
+ * side, e.g. the points in their own colours and in the colours of their labels
+ * (labelColor()), atomically. An organized cloud (at least 16 x 16) is
  * drawn pixel by pixel, as its sensor saw it (non-finite points black), scaled up
  * towards 640 pixels wide; any other cloud is seen orthographically along its axis of
  * least extent (the smallest principal axis), from the side of its sensor origin,
@@ -35,8 +37,8 @@ enum class PictureColors {
 void
 saveCloudPicture (const std::string& path,
                   const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
-                  PictureColors colors = PictureColors::LABELS,
-                  std::size_t width = 800);
+                  const std::vector<PictureColors>& panels,
+                  std::size_t width = 640);
 
 } // namespace tda
 } // namespace pcl

@@ -4,6 +4,8 @@
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <cstddef>
+
 namespace pcl {
 namespace tda {
 
@@ -15,8 +17,11 @@ using ToolRegionGrowing = PersistentRegionGrowingRGB<pcl::PointXYZRGB, pcl::Norm
  * measures as our default. */
 struct RegionSettings {
   /** \brief The default radius, in units of the cloud's spacing. */
-  static constexpr double RADIUS_PER_SPACING = 1.5;
-  /** \brief The quantile of the nearest-neighbour distances that is the spacing. */
+  static constexpr double RADIUS_PER_SPACING = 1.1;
+  /** \brief The spacing is measured to the SPACING_NEIGHBOR-th nearest point: about
+   * the eight neighbours of a point on a grid, also across the scan lines. */
+  static constexpr std::size_t SPACING_NEIGHBOR = 6;
+  /** \brief The quantile of those distances that is the spacing. */
   static constexpr double SPACING_QUANTILE = 0.9;
   /** \brief Upper bound of the automatic region colour threshold (Delta E76). */
   static constexpr double MAX_AUTO_COLOR_THRESHOLD = 40.0;
@@ -37,8 +42,9 @@ struct RegionSettings {
 };
 
 /** \brief The radius of \a settings, or the default one: RADIUS_PER_SPACING times
- * the SPACING_QUANTILE quantile of the nearest-neighbour distances (pointSpacing()),
- * which follows the sparser parts of a depth frame. 0 when the cloud has fewer than
+ * the SPACING_QUANTILE quantile of the distances to the SPACING_NEIGHBOR-th nearest
+ * point (pointSpacing()), which follows the sparser parts of a cloud and the gaps
+ * between scan lines. 0 when the cloud has fewer than
  * two distinct finite points. */
 double
 regionRadius (const RegionSettings& settings,

@@ -13,24 +13,26 @@ namespace pcl {
 namespace tda {
 
 /** \brief The spacing of a cloud's points: the \a quantile (in (0, 1]) of the
- * distances from each point to its nearest other point, over the finite points (at
- * most \a max_samples of them, evenly spread in the input order, so that the cost is
- * bounded on large clouds). Points at the same position count at the next distinct
- * one. 0 when there are fewer than two distinct finite points.
+ * distances from each point to its \a k -th nearest other point, over the finite
+ * points (at most \a max_samples of them, evenly spread in the input order, so that
+ * the cost is bounded on large clouds). Points at the same position are skipped. 0
+ * when there are fewer than k + 1 distinct finite points.
  *
- * The median (quantile 0.5) is the typical sampling distance; a higher quantile
- * follows the sparser parts, e.g. the far side of a depth frame. */
+ * With k = 1 and the median it is the typical sampling distance. A larger k follows
+ * sampling that is denser along one direction than across it (the scan lines of a
+ * laser or a stereo camera), a higher quantile the sparser parts of a cloud. */
 template <typename PointT>
 double
 pointSpacing (const pcl::PointCloud<PointT>& cloud,
               double quantile = 0.5,
+              std::size_t k = 1,
               std::size_t max_samples = 2000)
 {
   typename pcl::PointCloud<PointT>::Ptr finite (new pcl::PointCloud<PointT>);
   for (const PointT& point : cloud)
     if (pcl::isXYZFinite (point))
       finite->push_back (point);
-  if (finite->size() < 2)
+  if (finite->size() < 2 || k == 0)
     return 0.0;
   pcl::search::KdTree<PointT> tree;
   tree.setInputCloud (finite);
@@ -40,13 +42,13 @@ pointSpacing (const pcl::PointCloud<PointT>& cloud,
   std::vector<float> squared_distances;
   for (std::size_t i = 0; i < finite->size(); i += stride) {
     // Enough neighbours to step over a few duplicates of the point.
-    const int k = static_cast<int> (std::min<std::size_t> (8, finite->size()));
-    tree.nearestKSearch ((*finite)[i], k, neighbors, squared_distances);
-    const auto next = std::find_if (squared_distances.begin(),
-                                    squared_distances.end(),
-                                    [] (float d) { return d > 0.0f; });
-    if (next != squared_distances.end())
-      spacings.push_back (std::sqrt (static_cast<double> (*next)));
+    const auto wanted = static_cast<int> (std::min (k + 8, finite->size()));
+    tree.nearestKSearch ((*finite)[i], wanted, neighbors, squared_distances);
+    const auto first = std::find_if (squared_distances.begin(),
+                                     squared_distances.end(),
+                                     [] (float d) { return d > 0.0f; });
+    if (static_cast<std::size_t> (squared_distances.end() - first) >= k)
+      spacings.push_back (std::sqrt (static_cast<double> (*(first + (k - 1)))));
   }
   if (spacings.empty())
     return 0.0;

@@ -139,8 +139,8 @@ mergeSimilarRegions (const ColorRegions& patches,
 struct ColorThresholdChoice {
   /** \brief The chosen threshold (Delta E). */
   double threshold = 0.0;
-  /** \brief The step [low, high) of the region count it was chosen in; both 0 when
-   * there is none. */
+  /** \brief The longest step [low, high) of the region count (the threshold is its
+   * middle when it spans the gap ratio); both 0 when there is none. */
   double low = 0.0;
   double high = 0.0;
   /** \brief The number of regions in that step. */
@@ -153,23 +153,23 @@ struct ColorThresholdChoice {
 
 /** \brief Chooses a colour threshold from the region barcode (ColorRegions::bars):
  * the number of bars alive, i.e. of regions, is a step function of the threshold;
- * of its steps [low, high) within [\a floor, \a max_threshold] the longest by
- * log(high / low) with two regions or more is taken when it spans a factor of at
- * least \a gap_ratio (otherwise the longest of one region, if any), and the
- * threshold is its geometric middle sqrt(low high). A step cut short by
- * max_threshold, whose true length is unknown, is taken only when no other step of
- * two regions or more spans the gap ratio. The earliest of equally long
- * steps wins. max_threshold (not clear) when \a floor is not below it or no step
- * has a region.
+ * the step of longestStableStep() over [\a floor, \a max_threshold] (a step cut
+ * short by max_threshold counts only when no other is long enough) is taken when it
+ * spans a factor of at least \a gap_ratio, and the threshold is its geometric middle
+ * sqrt(low high). When no step does (the number of regions falls gradually, as on
+ * scans with many shades), the threshold is \a fallback (or max_threshold when
+ * lower), and the choice is not clear.
  * \param[in] bars the region barcode
  * \param[in] floor the smallest threshold considered (> 0)
  * \param[in] max_threshold the largest threshold considered
- * \param[in] gap_ratio the ratio q (> 1) */
+ * \param[in] gap_ratio the ratio q (> 1)
+ * \param[in] fallback the threshold when no step spans the gap ratio */
 ColorThresholdChoice
 chooseColorThreshold (const PersistenceDiagram& bars,
                       double floor,
                       double max_threshold,
-                      double gap_ratio);
+                      double gap_ratio,
+                      double fallback);
 
 } // namespace tda
 } // namespace pcl

@@ -311,8 +311,9 @@ public:
    * log(high / low)) with two regions or more is taken when it spans a factor of at
    * least the gap ratio, and the threshold is its geometric middle
    * (chooseColorThreshold()): the regions that stay the same over the widest range
-   * of thresholds. Only ratios enter; deterministic and independent of the input
-   * order and the number of threads. */
+   * of thresholds. When no step is that long, DEFAULT_REGION_COLOR_THRESHOLD is
+   * used, with a PCL_WARN. Only ratios enter; deterministic and independent of the
+   * input order and the number of threads. */
   void
   setAutoColorThreshold (bool enabled)
   {

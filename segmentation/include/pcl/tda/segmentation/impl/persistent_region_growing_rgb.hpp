@@ -246,19 +246,21 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
           regionsAtThreshold (num_patches, patch_forest, 0.0, 1).bars,
           auto_min_color_threshold_,
           region_color_threshold_,
-          gap_ratio_);
+          gap_ratio_,
+          DEFAULT_REGION_COLOR_THRESHOLD);
       chosen_region_threshold_ = choice.threshold;
       auto_threshold_is_clear_ = choice.clear;
       if (!choice.clear)
-        PCL_WARN ("[pcl::tda::%s::extract] The region barcode shows no clear gap: the "
-                  "automatic region colour threshold %g (%zu regions, stable from "
-                  "Delta E %g to %g) is a guess. Check the barcode, or set the "
-                  "threshold.\n",
-                  name,
-                  chosen_region_threshold_,
-                  choice.num_regions,
-                  choice.low,
-                  choice.high);
+        PCL_WARN (
+            "[pcl::tda::%s::extract] The region barcode shows no clear gap (its "
+            "longest step: %zu regions from Delta E %g to %g): the automatic "
+            "region colour threshold %g is a guess. Check the barcode, or set the "
+            "threshold.\n",
+            name,
+            choice.num_regions,
+            choice.low,
+            choice.high,
+            chosen_region_threshold_);
     }
     found = mergeSimilarRegions (found, patch_forest, chosen_region_threshold_);
     region_barcode_ = found.bars;
