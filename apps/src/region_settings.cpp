@@ -22,6 +22,7 @@ configureRegionGrowing (ToolRegionGrowing& growing,
                         const pcl::PointCloud<pcl::Normal>::ConstPtr& normals)
 {
   growing.setMaxDistance (radius);
+  growing.setMinNeighbors (RegionSettings::MIN_NEIGHBORS);
   growing.setColorThreshold (settings.point_color);
   growing.setAutoColorThreshold (settings.region_color == 0.0);
   growing.setRegionColorThreshold (settings.region_color == 0.0

@@ -1,5 +1,8 @@
 #include <pcl/common/eigen.h>
+#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/tda/segmentation/homogeneity_graph.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cmath>
@@ -49,6 +52,56 @@ neighborGraph (const std::vector<Point3d>& points,
   edges = listRadiusEdges (
       grid, points, radius, AcceptAllPairs{}, counts.offsets, threads, half (1));
   return true;
+}
+
+void
+addNearestNeighbors (const std::vector<Point3d>& points,
+                     double radius,
+                     std::size_t k,
+                     std::vector<FilteredEdge>& graph)
+{
+  if (k == 0 || points.size() < 2)
+    return;
+  std::vector<std::size_t> degree (points.size(), 0);
+  for (const FilteredEdge& edge : graph) {
+    ++degree[edge.source];
+    ++degree[edge.target];
+  }
+  if (std::none_of (
+          degree.begin(), degree.end(), [k] (std::size_t d) { return d < k; }))
+    return;
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  for (const Point3d& p : points)
+    cloud->push_back (pcl::PointXYZ (static_cast<float> (p[0]),
+                                     static_cast<float> (p[1]),
+                                     static_cast<float> (p[2])));
+  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
+  tree.setInputCloud (cloud);
+  // Several times k: along a dense row of points the k nearest are all in the row.
+  const int wanted = static_cast<int> (std::min (3 * k + 1, points.size()));
+  pcl::Indices neighbors;
+  std::vector<float> squared_distances;
+  std::vector<FilteredEdge> added;
+  for (SimplexIndex v = 0; v < points.size(); ++v) {
+    if (degree[v] >= k)
+      continue;
+    tree.nearestKSearch ((*cloud)[v], wanted, neighbors, squared_distances);
+    for (const auto neighbor : neighbors) {
+      const auto w = static_cast<SimplexIndex> (neighbor);
+      if (w == v || withinRadius (points[v], points[w], radius))
+        continue; // itself, or already an edge of the radius graph
+      added.push_back (
+          {std::min (v, w), std::max (v, w), distance (points[v], points[w])});
+    }
+  }
+  std::sort (added.begin(), added.end(), edgeFiltrationLess);
+  added.erase (std::unique (added.begin(),
+                            added.end(),
+                            [] (const FilteredEdge& a, const FilteredEdge& b) {
+                              return a.source == b.source && a.target == b.target;
+                            }),
+               added.end());
+  graph.insert (graph.end(), added.begin(), added.end());
 }
 
 NeighborLists

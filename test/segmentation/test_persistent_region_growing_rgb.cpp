@@ -4,6 +4,7 @@
 // refusals of bad input.
 
 #include <pcl/tda/common/cielab.h>
+#include <pcl/tda/segmentation/homogeneity_graph.h>
 #include <pcl/tda/segmentation/persistent_region_growing_rgb.h>
 
 #include <gtest/gtest.h>
@@ -378,4 +379,46 @@ TEST (PersistentRegionGrowingRGB, ColoredCloud)
     }
   }
   EXPECT_EQ (colors.size(), regions.size());
+}
+
+// Rows of points 1 mm apart along, 1 cm across, as on the far side of a depth frame:
+// the radius graph of 3 mm cuts them into strips, the nearest-neighbour fallback
+// joins them, adding only edges longer than the radius, each once.
+TEST (PersistentRegionGrowingRGB, MinNeighborsJoinSparseRows)
+{
+  Cloud::Ptr cloud (new Cloud);
+  for (int row = 0; row < 4; ++row)
+    for (int i = 0; i < 60; ++i) {
+      pcl::PointXYZRGB point;
+      point.x = 0.001f * i;
+      point.y = 0.01f * row;
+      point.z = 0.0f;
+      point.r = 90, point.g = 140, point.b = 60;
+      cloud->push_back (point);
+    }
+  RegionGrowing growing;
+  growing.setMaxDistance (0.003);
+  growing.setMinClusterSize (10);
+  EXPECT_EQ (grow (growing, cloud).size(), 4u);
+  growing.setMinNeighbors (5);
+  EXPECT_EQ (grow (growing, cloud).size(), 1u);
+
+  std::vector<Point3d> points;
+  for (const auto& p : *cloud)
+    points.push_back ({p.x, p.y, p.z});
+  std::vector<FilteredEdge> graph;
+  ComplexSize size;
+  ASSERT_TRUE (neighborGraph (
+      points, 0.003, 1, MemoryBudget{std::size_t (1) << 30, 24, 0}, graph, size));
+  const std::size_t radius_edges = graph.size();
+  addNearestNeighbors (points, 0.003, 5, graph);
+  ASSERT_GT (graph.size(), radius_edges);
+  std::set<std::pair<SimplexIndex, SimplexIndex>> pairs;
+  for (std::size_t e = 0; e < graph.size(); ++e) {
+    EXPECT_TRUE (pairs.insert ({graph[e].source, graph[e].target}).second);
+    EXPECT_LT (graph[e].source, graph[e].target);
+    if (e >= radius_edges) {
+      EXPECT_GT (graph[e].value, 0.003);
+    }
+  }
 }

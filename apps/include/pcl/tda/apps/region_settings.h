@@ -25,6 +25,10 @@ struct RegionSettings {
   static constexpr double SPACING_QUANTILE = 0.9;
   /** \brief Upper bound of the automatic region colour threshold (Delta E76). */
   static constexpr double MAX_AUTO_COLOR_THRESHOLD = 40.0;
+  /** \brief Fewest neighbours of a point: points with fewer within the radius are
+   * also joined to their nearest points (setMinNeighbors()). */
+  static constexpr std::size_t MIN_NEIGHBORS = 5;
+
   /** \brief Radius of the neighbour graph; 0: RADIUS_PER_SPACING times the
    * cloud's spacing (regionRadius()). */
   double radius = 0.0;

@@ -166,6 +166,23 @@ public:
     return max_distance_;
   }
 
+  /** \brief Sets the fewest neighbours of a point (default 0): a point with fewer
+   * within the max distance is also joined to its 3 k nearest points
+   * (addNearestNeighbors()), so that sparse parts of a cloud, e.g. the far side of a
+   * depth frame whose rows of points lie farther apart than the radius, are not cut
+   * into strips. 0 keeps the pure radius graph of the thesis. */
+  void
+  setMinNeighbors (std::size_t k)
+  {
+    min_neighbors_ = k;
+  }
+
+  std::size_t
+  getMinNeighbors () const
+  {
+    return min_neighbors_;
+  }
+
   /** \brief Sets the colour threshold of the first filtration (> 0, default
    * DEFAULT_COLOR_THRESHOLD): the largest Delta E76 between the CIELAB colours of two
    * neighbours in one patch (pcl::RegionGrowingRGB's point colour threshold). */
@@ -489,6 +506,7 @@ private:
 
   NormalsConstPtr normals_;
   bool estimate_normals_ = false;
+  std::size_t min_neighbors_ = 0;
   double max_distance_ = 0.0;
   double color_threshold_ = DEFAULT_COLOR_THRESHOLD;
   double region_color_threshold_ = DEFAULT_REGION_COLOR_THRESHOLD;

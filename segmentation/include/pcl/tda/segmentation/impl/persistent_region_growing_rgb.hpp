@@ -201,6 +201,7 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
     deinitCompute();
     return;
   }
+  addNearestNeighbors (vertices.points, max_distance_, min_neighbors_, graph);
   const bool estimate_normals = estimate_normals_ && !normals_;
   if (color_smoothing_ || estimate_normals) {
     const NeighborLists lists = neighborLists (n, graph);
