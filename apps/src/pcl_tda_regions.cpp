@@ -117,15 +117,6 @@ parseOptions (int argc, char** argv, Options& options)
   settings.min_size = static_cast<pcl::uindex_t> (min_size);
 }
 
-/** True when the cloud has field \a name. */
-bool
-hasField (const pcl::PCLPointCloud2& blob, const std::string& name)
-{
-  return std::any_of (blob.fields.begin(), blob.fields.end(), [&name] (const auto& f) {
-    return f.name == name;
-  });
-}
-
 /** The normals of the input: true with \a normals null when it has none (they are
  * then estimated from the neighbour graph), false after an error. */
 bool
@@ -135,8 +126,9 @@ inputNormals (const pcl::PCLPointCloud2& blob,
               pcl::tda::ToolConsole& console)
 {
   normals.reset();
-  if (hasField (blob, "normal_x") && hasField (blob, "normal_y") &&
-      hasField (blob, "normal_z")) {
+  if (pcl::getFieldIndex (blob, "normal_x") >= 0 &&
+      pcl::getFieldIndex (blob, "normal_y") >= 0 &&
+      pcl::getFieldIndex (blob, "normal_z") >= 0) {
     console.beginStep ("Normals", "from the input");
     normals.reset (new Normals);
     pcl::fromPCLPointCloud2 (blob, *normals);
@@ -186,7 +178,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     console.error ("Cannot read the PCD file: " + pcl::tda::errorMessage (failure));
     return 1;
   }
-  if (!hasField (blob, "rgb") && !hasField (blob, "rgba")) {
+  if (pcl::getFieldIndex (blob, "rgb") < 0 && pcl::getFieldIndex (blob, "rgba") < 0) {
     console.error (options.input +
                    " has no colour (no rgb or rgba field): "
                    "pcl_tda_regions segments by colour. For segmentation by distance "

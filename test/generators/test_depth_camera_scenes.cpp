@@ -28,6 +28,9 @@ using pcl::tda::DepthCameraScene;
 using pcl::tda::DepthColourRegion;
 using pcl::tda::test::identical;
 
+using pcl::tda::test::deltaE;
+using pcl::tda::test::fingerprint;
+
 namespace {
 
 /** A scene with the default parameters but the seed and a smaller image. */
@@ -77,45 +80,6 @@ paintedScene (std::uint64_t seed, float colour_noise = 0.0f)
   p.remove_table = false;
   p.colour_noise = colour_noise;
   return pcl::tda::generateDepthCameraScene (p);
-}
-
-/** FNV-1a hash of the coordinates, colour and label of every point. */
-std::uint64_t
-fingerprint (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud)
-{
-  std::uint64_t hash = 14695981039346656037ULL;
-  for (const auto& point : cloud) {
-    unsigned char bytes[20];
-    std::memcpy (bytes, &point.x, 4);
-    std::memcpy (bytes + 4, &point.y, 4);
-    std::memcpy (bytes + 8, &point.z, 4);
-    std::memcpy (bytes + 12, &point.rgba, 4);
-    std::memcpy (bytes + 16, &point.label, 4);
-    for (const unsigned char byte : bytes) {
-      hash ^= byte;
-      hash *= 1099511628211ULL;
-    }
-  }
-  return hash;
-}
-
-/** The CIE76 colour difference, by PCL's conversion to CIELAB. */
-double
-deltaE (const DepthColourRegion& a, const DepthColourRegion& b)
-{
-  pcl::PointXYZRGB rgb;
-  pcl::PointXYZLAB lab_a, lab_b;
-  rgb.r = a.r;
-  rgb.g = a.g;
-  rgb.b = a.b;
-  pcl::PointXYZRGBtoXYZLAB (rgb, lab_a);
-  rgb.r = b.r;
-  rgb.g = b.g;
-  rgb.b = b.b;
-  pcl::PointXYZRGBtoXYZLAB (rgb, lab_b);
-  return std::sqrt ((lab_a.L - lab_b.L) * (lab_a.L - lab_b.L) +
-                    (lab_a.a - lab_b.a) * (lab_a.a - lab_b.a) +
-                    (lab_a.b - lab_b.b) * (lab_a.b - lab_b.b));
 }
 
 /** The pairs (a, b), a < b, of region labels of neighbouring pixels (4-connected)

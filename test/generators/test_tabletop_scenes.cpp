@@ -33,6 +33,9 @@ using pcl::tda::TabletopScene;
 using pcl::tda::test::identical;
 using Cloud = pcl::PointCloud<pcl::PointXYZRGBL>;
 
+using pcl::tda::test::deltaE;
+using pcl::tda::test::fingerprint;
+
 namespace {
 
 TabletopScene
@@ -178,45 +181,6 @@ std::array<int, 3>
 colourOf (const Coloured& x)
 {
   return {x.r, x.g, x.b};
-}
-
-/** FNV-1a hash of the coordinates, colour and label of every point. */
-std::uint64_t
-fingerprint (const Cloud& cloud)
-{
-  std::uint64_t hash = 14695981039346656037ULL;
-  for (const auto& point : cloud) {
-    unsigned char bytes[20];
-    std::memcpy (bytes, &point.x, 4);
-    std::memcpy (bytes + 4, &point.y, 4);
-    std::memcpy (bytes + 8, &point.z, 4);
-    std::memcpy (bytes + 12, &point.rgba, 4);
-    std::memcpy (bytes + 16, &point.label, 4);
-    for (const unsigned char byte : bytes) {
-      hash ^= byte;
-      hash *= 1099511628211ULL;
-    }
-  }
-  return hash;
-}
-
-/** The CIE76 colour difference, by PCL's conversion to CIELAB. */
-double
-deltaE (const TabletopColourRegion& a, const TabletopColourRegion& b)
-{
-  pcl::PointXYZRGB rgb;
-  pcl::PointXYZLAB lab_a, lab_b;
-  rgb.r = a.r;
-  rgb.g = a.g;
-  rgb.b = a.b;
-  pcl::PointXYZRGBtoXYZLAB (rgb, lab_a);
-  rgb.r = b.r;
-  rgb.g = b.g;
-  rgb.b = b.b;
-  pcl::PointXYZRGBtoXYZLAB (rgb, lab_b);
-  return std::sqrt ((lab_a.L - lab_b.L) * (lab_a.L - lab_b.L) +
-                    (lab_a.a - lab_b.a) * (lab_a.a - lab_b.a) +
-                    (lab_a.b - lab_b.b) * (lab_a.b - lab_b.b));
 }
 
 /** The pairs (a, b), a < b, of region labels with points at most \a distance

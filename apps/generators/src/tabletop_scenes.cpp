@@ -1,3 +1,4 @@
+#include <pcl/tda/common/cielab.h>
 #include <pcl/tda/generators/parameter_checks.h>
 #include <pcl/tda/generators/random_sampling.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
@@ -65,28 +66,12 @@ constexpr int MAX_PAINT_ATTEMPTS = 100;
 /** Offset of the seed of the painting's random generator from the scene's seed. */
 constexpr std::uint64_t PAINT_SEED_OFFSET = 0x9e3779b97f4a7c15ULL;
 
-/** The sRGB colour in CIELAB (D65 white, 2 degree observer). */
+/** The sRGB colour in CIELAB (rgbToLab(): D65 white, 2 degree observer). */
 Eigen::Vector3d
 toLab (const Colour& colour)
 {
-  const auto linear = [] (std::uint8_t level) {
-    const double c = level / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow ((c + 0.055) / 1.055, 2.4);
-  };
-  const Eigen::Vector3d rgb (
-      linear (colour[0]), linear (colour[1]), linear (colour[2]));
-  Eigen::Matrix3d to_xyz;
-  to_xyz << 0.4124564, 0.3575761, 0.1804375, 0.2126729, 0.7151522, 0.0721750, 0.0193339,
-      0.1191920, 0.9503041;
-  const Eigen::Vector3d xyz =
-      (to_xyz * rgb).cwiseQuotient (Eigen::Vector3d (0.95047, 1.0, 1.08883));
-  const auto f = [] (double t) {
-    constexpr double delta = 6.0 / 29.0;
-    return t > delta * delta * delta ? std::cbrt (t)
-                                     : t / (3.0 * delta * delta) + 4.0 / 29.0;
-  };
-  const double fx = f (xyz.x()), fy = f (xyz.y()), fz = f (xyz.z());
-  return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
+  const LabColor lab = rgbToLab (colour[0], colour[1], colour[2]);
+  return {lab.l, lab.a, lab.b};
 }
 
 /** Narrows [t0, t1] to the parameters t at which p + t * d lies strictly inside the
