@@ -1,7 +1,8 @@
 /** pcl_tda_generate: writes a synthetic point cloud with exact ground truth (a
  * circle, torus or sphere with known Betti numbers, a tabletop scene labelled by
- * object, or a tabletop or depth camera scene painted in colour regions and
- * labelled by region) to a binary PCD file. */
+ * object, a tabletop or depth camera scene painted in colour regions and labelled by
+ * region, or a surface with round holes labelled by hole rim) to a binary PCD
+ * file. */
 
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_files.h>
@@ -10,11 +11,16 @@
 #include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/generators/depth_camera_scenes.h>
+#include <pcl/tda/generators/hole_surfaces.h>
 #include <pcl/tda/generators/shapes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/exceptions.h>
 
+#include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -30,11 +36,17 @@ constexpr long MAX_POINTS = 10000000;
 /** The most colour noise -colour-noise accepts, in 0-255 levels. */
 constexpr double MAX_COLOUR_NOISE = 255.0;
 
+/** -remove must be below this: pcl::tda::MAX_HOLE_REMOVAL_FRACTION in decimal. */
+constexpr double MAX_REMOVE = 0.9;
+static_assert (static_cast<float> (MAX_REMOVE) == pcl::tda::MAX_HOLE_REMOVAL_FRACTION,
+               "MAX_REMOVE is MAX_HOLE_REMOVAL_FRACTION");
+
 void
 printHelp (const char* program)
 {
-  print_info ("Syntax is: %s <circle|torus|sphere|tabletop|regions|depth-regions> "
-              "output.pcd <options>\n",
+  print_info ("Syntax is: %s "
+              "<circle|torus|sphere|tabletop|regions|depth-regions|holes> output.pcd "
+              "<options>\n",
               program);
   print_info ("  where the kinds are:\n");
   print_info (
@@ -51,9 +63,16 @@ printHelp (const char* program)
       "structured-light camera,\n"
       "                    objects painted in two tones, labelled by region (table "
       "1, regions 2..;\n"
-      "                    0 and NaN coordinates for lost pixels)\n",
+      "                    0 and NaN coordinates for lost pixels)\n"
+      "    holes         = a surface with round holes (pcl::PointXYZL), labelled "
+      "by hole rim:\n"
+      "                    %u on the surface, k on the rim of hole k (1..), %u "
+      "near the surface's\n"
+      "                    own border\n",
       pcl::tda::TABLE_LABEL,
-      pcl::tda::FIRST_OBJECT_LABEL);
+      pcl::tda::FIRST_OBJECT_LABEL,
+      pcl::tda::SURFACE_LABEL,
+      pcl::tda::OUTER_BORDER_LABEL);
   print_info ("  and the options are:\n");
   print_info (
       "    -n N       = number of points of a shape, 1 to %ld (default: circle "
@@ -62,15 +81,22 @@ printHelp (const char* program)
       "N samples on\n"
       "                 the table top, which sets the sampling density (default: "
       "one point per\n"
-      "                 1 cm x 1 cm; at least 1750); not for depth-regions\n",
-      MAX_POINTS);
+      "                 1 cm x 1 cm; at least 1750); for holes, the points "
+      "sampled before the\n"
+      "                 holes are cut, at least %zu (default %zu); not for "
+      "depth-regions\n",
+      MAX_POINTS,
+      pcl::tda::MIN_HOLE_SURFACE_POINTS,
+      pcl::tda::HoleSurfaceParameters().num_points);
   print_info ("    -noise S   = Gaussian noise sigma of a shape (default 0.01); the "
               "depth noise sigma at 1 m\n"
               "                 of the tabletop camera (default: tabletop 0.001, "
               "regions 0.0005);\n"
               "                 for depth-regions, the depth noise coefficient k in "
               "1/m, sigma k z^2 at\n"
-              "                 depth z (default 0.0015)\n");
+              "                 depth z (default 0.0015); for holes, sigma in units "
+              "of the spacing h,\n"
+              "                 below 1 (default 0)\n");
   print_info ("    -colour-noise S\n"
               "               = colour noise sigma in levels of 0-255, 0 to %g "
               "(default 4); for tabletop,\n"
@@ -84,6 +110,19 @@ printHelp (const char* program)
               "seed)\n",
               pcl::tda::MAX_TABLETOP_OBJECTS,
               pcl::tda::MAX_DEPTH_CAMERA_OBJECTS);
+  print_info ("  and for holes only:\n");
+  print_info ("    -surface S = plane, sphere, cylinder, torus or heightfield "
+              "(default plane)\n");
+  print_info ("    -hole-radii R1,R2,.. = one hole per radius, in units of the "
+              "spacing h, each >= %g\n"
+              "                 (default 3,5,8)\n",
+              pcl::tda::MIN_HOLE_RADIUS);
+  print_info ("    -remove F  = fraction of the points removed at random after "
+              "cutting, >= 0 and < %g\n"
+              "                 (default 0)\n",
+              MAX_REMOVE);
+  print_info ("    -removed F.pcd = also write the points removed at random (needs "
+              "-remove)\n");
 }
 
 /** The parameters of the command line; n 0, objects, noise and colour noise < 0
@@ -92,7 +131,52 @@ struct Options {
   std::string kind, output;
   long n = 0, seed = 0, objects = -1;
   double noise = -1.0, colour_noise = -1.0;
+  // holes only
+  pcl::tda::HoleSurfaceKind surface = pcl::tda::HoleSurfaceKind::PLANE;
+  std::vector<float> hole_radii = pcl::tda::HoleSurfaceParameters().hole_radii;
+  double remove = 0.0;
+  std::string removed;
 };
+
+/** The text that follows the option \a name on the command line. */
+std::string
+argumentOf (int argc, char** argv, const std::string& name)
+{
+  for (int i = 1; i + 1 < argc; ++i)
+    if (name == argv[i])
+      return argv[i + 1];
+  return "";
+}
+
+/** Reads the value of -hole-radii, numbers >= MIN_HOLE_RADIUS separated by commas.
+ * \throws pcl::BadArgumentException naming the option and value */
+std::vector<float>
+parseHoleRadii (const std::string& text)
+{
+  std::vector<float> radii;
+  std::size_t begin = 0;
+  for (;;) {
+    const std::size_t end = std::min (text.find (',', begin), text.size());
+    const std::string item = text.substr (begin, end - begin);
+    char* stop = nullptr;
+    errno = 0;
+    const double radius = std::strtod (item.c_str(), &stop);
+    if (item.empty() || std::isspace (static_cast<unsigned char> (item[0])) ||
+        stop != item.c_str() + item.size() || errno == ERANGE ||
+        !std::isfinite (radius) || radius < pcl::tda::MIN_HOLE_RADIUS ||
+        radius > std::numeric_limits<float>::max())
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option -hole-radii needs numbers >= "
+                               << pcl::tda::MIN_HOLE_RADIUS
+                               << " separated by commas (radii in units of the "
+                                  "spacing), not '"
+                               << text << "'.");
+    radii.push_back (static_cast<float> (radius));
+    if (end == text.size())
+      return radii;
+    begin = end + 1;
+  }
+}
 
 /** Reads the command line into \a options.
  * \throws pcl::BadArgumentException naming the option at fault */
@@ -115,23 +199,32 @@ parseOptions (int argc, char** argv, Options& options)
                            options.objects,
                            0,
                            static_cast<long> (pcl::tda::MAX_TABLETOP_OBJECTS));
+  std::string surface, hole_radii;
+  command_line.addText ("-surface", surface);
+  command_line.addText ("-hole-radii", hole_radii);
+  // The maximum itself is refused below.
+  command_line.addNumber (
+      "-remove", options.remove, pcl::tda::NumberRange::atLeast (0.0, MAX_REMOVE));
+  command_line.addText ("-removed", options.removed);
   const std::vector<std::string> arguments = command_line.parse (argc, argv);
   pcl::tda::checkArguments (arguments, {{"kind", ""}, {"output", ".pcd"}});
   options.kind = arguments[0];
   options.output = arguments[1];
   const std::string& kind = options.kind;
   const bool shape = kind == "circle" || kind == "torus" || kind == "sphere";
-  if (!shape && kind != "tabletop" && kind != "regions" && kind != "depth-regions")
+  const bool holes = kind == "holes";
+  if (!shape && !holes && kind != "tabletop" && kind != "regions" &&
+      kind != "depth-regions")
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "Unknown kind '"
                              << kind
-                             << "': use circle, torus, sphere, tabletop, regions or "
-                                "depth-regions.");
-  if (options.objects >= 0 && shape)
+                             << "': use circle, torus, sphere, tabletop, regions, "
+                                "depth-regions or holes.");
+  if (options.objects >= 0 && (shape || holes))
     PCL_THROW_EXCEPTION (
         pcl::BadArgumentException,
         "Option -objects applies to tabletop, regions and depth-regions only.");
-  if (options.colour_noise >= 0.0 && shape)
+  if (options.colour_noise >= 0.0 && (shape || holes))
     PCL_THROW_EXCEPTION (
         pcl::BadArgumentException,
         "Option -colour-noise applies to tabletop, regions and depth-regions only.");
@@ -144,19 +237,59 @@ parseOptions (int argc, char** argv, Options& options)
                          "Option -objects needs an integer from 1 to "
                              << pcl::tda::MAX_DEPTH_CAMERA_OBJECTS
                              << " for depth-regions, not '0'.");
+  for (const char* option : {"-surface", "-hole-radii", "-remove", "-removed"})
+    if (command_line.given (option) && !holes)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option " << option << " applies to holes only.");
+  if (!holes)
+    return;
+  if (!surface.empty() && !pcl::tda::parseHoleSurfaceKind (surface, options.surface))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Option -surface needs plane, sphere, cylinder, torus or "
+                         "heightfield, not '"
+                             << surface << "'.");
+  if (!hole_radii.empty())
+    options.hole_radii = parseHoleRadii (hole_radii);
+  if (options.n > 0 &&
+      options.n < static_cast<long> (pcl::tda::MIN_HOLE_SURFACE_POINTS))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Option -n needs an integer from "
+                             << pcl::tda::MIN_HOLE_SURFACE_POINTS << " to "
+                             << MAX_POINTS << " for holes, not '" << options.n << "'.");
+  if (options.noise >= 1.0)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Option -noise needs a number >= 0 and < 1 for holes (in "
+                         "units of the spacing), not '"
+                             << options.noise << "'.");
+  if (static_cast<float> (options.remove) >= pcl::tda::MAX_HOLE_REMOVAL_FRACTION)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Option -remove needs a number >= 0 and < "
+                             << MAX_REMOVE << ", not '"
+                             << argumentOf (argc, argv, "-remove") << "'.");
+  if (!options.removed.empty()) {
+    if (options.remove == 0.0)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option -removed needs -remove F with F > 0.");
+    pcl::tda::checkArguments ({options.removed}, {{"-removed file", ".pcd"}});
+  }
 }
 
 /** Writes the cloud as binary PCD to the temporary file of \a outputs and commits
- * it, as a console step. */
+ * it, as a console step; \a write_more writes the other outputs' temporary files
+ * before the commit. */
+template <typename PointT>
 bool
-saveCloud (const std::string& path,
-           const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
-           pcl::tda::ToolOutputs& outputs,
-           pcl::tda::ToolConsole& console)
+saveCloud (
+    const std::string& path,
+    const pcl::PointCloud<PointT>& cloud,
+    pcl::tda::ToolOutputs& outputs,
+    pcl::tda::ToolConsole& console,
+    const std::function<void()>& write_more = [] {})
 {
   console.beginStep ("Saving", path);
   try {
     pcl::tda::savePointCloudFile (outputs.temporary (path), cloud);
+    write_more();
     outputs.commit();
   }
   catch (const pcl::PCLException& e) {
@@ -271,11 +404,70 @@ runDepthRegions (const Options& options,
              : 1;
 }
 
+/** Generates a surface with round holes and saves it (and the points removed at
+ * random, when asked). */
+int
+runHoles (const Options& options,
+          pcl::tda::ToolOutputs& outputs,
+          pcl::tda::ToolConsole& console)
+{
+  pcl::tda::HoleSurfaceParameters parameters;
+  parameters.kind = options.surface;
+  if (options.n > 0)
+    parameters.num_points = static_cast<std::size_t> (options.n);
+  parameters.hole_radii = options.hole_radii;
+  if (options.noise >= 0.0)
+    parameters.noise_sigma = static_cast<float> (options.noise);
+  parameters.removal_fraction = static_cast<float> (options.remove);
+  parameters.seed = static_cast<std::uint64_t> (options.seed);
+  const pcl::tda::HoleSurface surface = pcl::tda::generateHoleSurface (parameters);
+  console.endStep (std::to_string (surface.cloud->size()) + " points, " +
+                   std::to_string (surface.holes.size()) + " holes, " +
+                   std::to_string (surface.removed->size()) + " removed at random");
+  print_info ("Spacing h = ");
+  print_value ("%g", surface.spacing);
+  print_info ("; labels: surface ");
+  print_value ("%u", pcl::tda::SURFACE_LABEL);
+  if (!surface.holes.empty()) {
+    print_info (", rims of the holes ");
+    print_value ("%u", 1u);
+    print_info (" to ");
+    print_value ("%zu", surface.holes.size());
+  }
+  if (!surface.closed) {
+    print_info (", outer border ");
+    print_value ("%u", pcl::tda::OUTER_BORDER_LABEL);
+  }
+  print_info ("\n");
+  for (std::size_t i = 0; i < surface.holes.size(); ++i) {
+    const pcl::tda::HoleSurface::Hole& hole = surface.holes[i];
+    print_info ("Hole ");
+    print_value ("%zu", i + 1);
+    print_info (": centre (%g, %g, %g), radius ",
+                hole.center.x(),
+                hole.center.y(),
+                hole.center.z());
+    print_value ("%g\n", hole.radius);
+  }
+  return saveCloud (options.output,
+                    *surface.cloud,
+                    outputs,
+                    console,
+                    [&] {
+                      if (!options.removed.empty())
+                        pcl::tda::savePointCloudFile (
+                            outputs.temporary (options.removed), *surface.removed);
+                    })
+             ? 0
+             : 1;
+}
+
 /** Generates the cloud of \a options and saves it. */
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
-  pcl::tda::ToolOutputs outputs ("", {{"output", options.output}});
+  pcl::tda::ToolOutputs outputs (
+      "", {{"output", options.output}, {"-removed", options.removed}});
   const std::string& kind = options.kind;
   const long n = options.n, seed = options.seed;
   const double noise = options.noise;
@@ -284,6 +476,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     return runTabletop (options, outputs, console);
   if (kind == "depth-regions")
     return runDepthRegions (options, outputs, console);
+  if (kind == "holes")
+    return runHoles (options, outputs, console);
 
   // The parameters every shape has, from the options given.
   const auto with_options = [&] (auto parameters) {

@@ -1,5 +1,6 @@
 #include <pcl/common/eigen.h>
 #include <pcl/kdtree/kdtree_flann.h>
+#include <pcl/tda/common/plane_fit.h>
 #include <pcl/tda/segmentation/homogeneity_graph.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
@@ -136,29 +137,19 @@ neighborNormals (const std::vector<Point3d>& points,
     const std::size_t begin = lists.offsets[v], end = lists.offsets[v + 1];
     if (end - begin < 2)
       continue;
-    // Covariance about the vertex itself (shifting by a point of the set keeps the
-    // sums small and the covariance exact).
+    // The vertex and its neighbours, offsets taken from the vertex.
     const Point3d& origin = points[v];
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d products = Eigen::Matrix3d::Zero();
-    for (std::size_t k = begin; k < end; ++k) {
-      const Point3d& p = points[lists.neighbors[k]];
-      const Eigen::Vector3d d (p[0] - origin[0], p[1] - origin[1], p[2] - origin[2]);
-      sum += d;
-      products += d * d.transpose();
-    }
-    const double n = static_cast<double> (end - begin + 1);
-    const Eigen::Matrix3f covariance =
-        ((products - sum * sum.transpose() / n) / n).cast<float>();
-    float eigenvalue = 0.0f;
-    Eigen::Vector3f normal;
-    pcl::eigen33 (covariance, eigenvalue, normal);
+    PlaneFit plane (origin);
+    plane.add (origin);
+    for (std::size_t k = begin; k < end; ++k)
+      plane.add (points[lists.neighbors[k]]);
+    Eigen::Vector3f normal = plane.normal();
     const Eigen::Vector3f position (static_cast<float> (origin[0]),
                                     static_cast<float> (origin[1]),
                                     static_cast<float> (origin[2]));
     if (normal.dot (-position) < 0.0f) // towards the viewpoint at the origin
       normal = -normal;
-    normals[v] = normal.normalized();
+    normals[v] = normal;
   }
   return normals;
 }

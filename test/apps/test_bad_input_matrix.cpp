@@ -274,6 +274,25 @@ TEST_F (BadInputMatrix, BadOptions)
       {"circle out.pcd -radius 2", "Unknown option -radius"},
       {"circle out.pcd extra.pcd",
        "Need the kind and the output .pcd file, not 3 arguments."},
+      {"holes out.pcd -surface cube",
+       "Option -surface needs plane, sphere, cylinder, torus or heightfield, not "
+       "'cube'."},
+      {"holes out.pcd -hole-radii 3,,5",
+       "Option -hole-radii needs numbers >= 1 separated by commas (radii in units of "
+       "the spacing), not '3,,5'."},
+      {"holes out.pcd -hole-radii 200",
+       "generateHoleSurface: cannot place 1 hole of radius 200"},
+      {"holes out.pcd -noise 1",
+       "Option -noise needs a number >= 0 and < 1 for holes (in units of the "
+       "spacing), not '1'."},
+      {"holes out.pcd -remove 0.9",
+       "Option -remove needs a number >= 0 and < 0.9, not '0.9'."},
+      {"holes out.pcd -n 999",
+       "Option -n needs an integer from 1000 to 10000000 for holes, not '999'."},
+      {"holes out.pcd -removed r.pcd", "Option -removed needs -remove F with F > 0."},
+      {"holes out.pcd -remove 0.1 -removed r.csv",
+       "The -removed file r.csv must be a .pcd file."},
+      {"circle out.pcd -surface plane", "Option -surface applies to holes only."},
   };
   for (const auto& [arguments, message] : generate_cases)
     expectRefusal ("generate", arguments, message);
@@ -324,6 +343,12 @@ TEST_F (BadInputMatrix, BadOutputs)
   for (const auto& [arguments, message] : regions_cases)
     expectRefusal ("regions", arguments, message);
   expectRefusal ("generate", "circle x.pcd", "cannot write x.pcd: it is a directory");
+  expectRefusal ("generate",
+                 "holes out.pcd -remove 0.1 -removed x.pcd",
+                 "cannot write x.pcd: it is a directory");
+  expectRefusal ("generate",
+                 "holes out.pcd -remove 0.1 -removed ./out.pcd",
+                 "output and -removed name the same file ./out.pcd");
   expectRefusal ("generate",
                  "circle nodir/c.pcd",
                  "cannot write nodir/c.pcd: the folder nodir does not exist");

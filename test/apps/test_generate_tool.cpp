@@ -1,9 +1,10 @@
 // End-to-end tests of pcl_tda_generate: loadable files of every kind, the same
-// tabletop, colour region and depth camera scenes as the library, and refusals that
-// leave no files behind.
+// tabletop, colour region, depth camera scenes and hole surfaces as the library, and
+// refusals that leave no files behind.
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/generators/depth_camera_scenes.h>
+#include <pcl/tda/generators/hole_surfaces.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 
 #include <gtest/gtest.h>
@@ -13,9 +14,12 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 using pcl::tda::TabletopParameters;
 using pcl::tda::TabletopScene;
@@ -32,6 +36,23 @@ runTool (const std::string& arguments)
   return pcl::tda::test::run (std::string (PCL_TDA_BIN_DIR) + "/pcl_tda_generate " +
                               arguments)
       .exit_code;
+}
+
+/** The names of the files in \a folder. */
+std::set<std::string>
+fileNames (const std::string& folder)
+{
+  std::set<std::string> names;
+  for (const auto& entry : std::filesystem::directory_iterator (folder))
+    names.insert (entry.path().filename().string());
+  return names;
+}
+
+std::string
+contents (const std::string& path)
+{
+  std::ifstream file (path, std::ios::binary);
+  return {std::istreambuf_iterator<char> (file), std::istreambuf_iterator<char>()};
 }
 
 } // namespace
@@ -173,4 +194,114 @@ TEST (GenerateTool, WritesColourRegionScenesLabelledByRegion)
   EXPECT_TRUE (identical (*pcl::tda::regionLabelledCloud (depth), cloud));
   EXPECT_EQ (4u, depth.objects.size());
   EXPECT_EQ (pcl::tda::DEPTH_BACKGROUND_LABEL, depth.regions.at (0).object_label);
+}
+
+TEST (GenerateTool, WritesHoleSurfacesAndTheRemovedPoints)
+{
+  const TemporaryFolder folder;
+  const std::string file = folder.path() + "/holes.pcd";
+  const std::string removed = folder.path() + "/removed.pcd";
+  ASSERT_EQ (0,
+             runTool ("holes " + file +
+                      " -surface torus -n 5000 -hole-radii 3,4.5 -noise 0.1 -remove "
+                      "0.2 -removed " +
+                      removed + " -seed 3"));
+  pcl::PointCloud<pcl::PointXYZL> cloud;
+  pcl::PointCloud<pcl::PointXYZ> gone;
+  ASSERT_EQ (0, pcl::io::loadPCDFile (file, cloud));
+  ASSERT_EQ (0, pcl::io::loadPCDFile (removed, gone));
+  pcl::tda::HoleSurfaceParameters parameters;
+  parameters.kind = pcl::tda::HoleSurfaceKind::TORUS;
+  parameters.num_points = 5000;
+  parameters.hole_radii = {3.0f, 4.5f};
+  parameters.noise_sigma = 0.1f;
+  parameters.removal_fraction = 0.2f;
+  parameters.seed = 3;
+  const pcl::tda::HoleSurface surface = pcl::tda::generateHoleSurface (parameters);
+  EXPECT_TRUE (identical (*surface.cloud, cloud));
+  EXPECT_TRUE (identical (*surface.removed, gone));
+  EXPECT_FALSE (gone.empty());
+
+  // The defaults: a plane with holes of radii 3, 5 and 8, no noise, no removal.
+  ASSERT_EQ (0, runTool ("holes " + file + " -seed 1"));
+  ASSERT_EQ (0, pcl::io::loadPCDFile (file, cloud));
+  pcl::tda::HoleSurfaceParameters defaults;
+  defaults.seed = 1;
+  EXPECT_TRUE (identical (*pcl::tda::generateHoleSurface (defaults).cloud, cloud));
+
+  // Every surface.
+  for (const std::string surface_name :
+       {"plane", "sphere", "cylinder", "torus", "heightfield"}) {
+    SCOPED_TRACE (surface_name);
+    ASSERT_EQ (0,
+               runTool ("holes " + file + " -surface " + surface_name +
+                        " -n 3000 -hole-radii 2 -seed 4"));
+    ASSERT_EQ (0, pcl::io::loadPCDFile (file, cloud));
+    std::set<std::uint32_t> labels;
+    for (const auto& point : cloud)
+      labels.insert (point.label);
+    EXPECT_EQ (1u, labels.count (1u));
+    EXPECT_EQ (surface_name == "sphere" || surface_name == "torus" ? 0u : 1u,
+               labels.count (pcl::tda::OUTER_BORDER_LABEL));
+  }
+  // No temporary files are left behind.
+  EXPECT_EQ ((std::set<std::string>{"holes.pcd", "removed.pcd"}),
+             fileNames (folder.path()));
+}
+
+TEST (GenerateTool, HolesFailOnBadArgumentsWithoutWritingFiles)
+{
+  const TemporaryFolder folder;
+  const std::string file = folder.path() + "/out.pcd";
+  const std::string removed = folder.path() + "/removed.pcd";
+  const std::vector<std::string> bad = {
+      "-surface cube",
+      "-surface Plane",
+      "-surface",
+      "-hole-radii 3,,5",
+      "-hole-radii 3,",
+      "-hole-radii ,3",
+      "-hole-radii '3;5'", // quoted for the shell
+      "-hole-radii 0.5",
+      "-hole-radii -3",
+      "-hole-radii abc",
+      "-hole-radii 1e40",
+      "-hole-radii 200", // does not fit
+      "-hole-radii 10,10,10,10,10,10,10,10,10,10,10,10,10,10,10,10,10,10,10,10,10,10",
+      "-noise 1",
+      "-noise -0.1",
+      "-remove 0.9",
+      "-remove -0.1",
+      "-remove 1",
+      "-remove x",
+      "-removed " + removed, // without -remove
+      "-remove 0 -removed " + removed,
+      "-remove 0.1 -removed " + folder.path() + "/removed.txt",
+      "-remove 0.1 -removed " + file, // the output itself
+      "-n 999",
+      "-n 0",
+      "-objects 2",
+      "-colour-noise 3",
+      "-seed -1",
+      "-surface plane -surface torus",
+  };
+  for (const std::string& arguments : bad)
+    EXPECT_NE (0, runTool ("holes " + file + " " + arguments)) << arguments;
+  // The options of holes do not apply to other kinds.
+  EXPECT_NE (0, runTool ("circle " + file + " -surface plane"));
+  EXPECT_NE (0, runTool ("sphere " + file + " -hole-radii 3"));
+  EXPECT_NE (0, runTool ("tabletop " + file + " -remove 0.1"));
+  EXPECT_NE (0, runTool ("torus " + file + " -removed " + removed));
+  EXPECT_TRUE (fileNames (folder.path()).empty());
+
+  // A failed run leaves existing outputs as they were.
+  ASSERT_EQ (0, runTool ("holes " + file + " -n 2000 -remove 0.1 -removed " + removed));
+  const std::string before = contents (file), removed_before = contents (removed);
+  EXPECT_NE (0,
+             runTool ("holes " + file +
+                      " -n 2000 -hole-radii 200 -remove 0.1 -removed " + removed));
+  EXPECT_EQ (before, contents (file));
+  EXPECT_EQ (removed_before, contents (removed));
+  EXPECT_EQ ((std::set<std::string>{"out.pcd", "removed.pcd"}),
+             fileNames (folder.path()));
 }

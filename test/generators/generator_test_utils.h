@@ -36,6 +36,33 @@ identical (const pcl::PointCloud<pcl::PointXYZRGBL>& a,
   return true;
 }
 
+/** \brief Bitwise equality of coordinates and label of every point. */
+inline bool
+identical (const pcl::PointCloud<pcl::PointXYZL>& a,
+           const pcl::PointCloud<pcl::PointXYZL>& b)
+{
+  if (a.size() != b.size())
+    return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (std::memcmp (a[i].data, b[i].data, 3 * sizeof (float)) != 0 ||
+        a[i].label != b[i].label)
+      return false;
+  return true;
+}
+
+/** \brief Bitwise equality of the coordinates of every point. */
+inline bool
+identical (const pcl::PointCloud<pcl::PointXYZ>& a,
+           const pcl::PointCloud<pcl::PointXYZ>& b)
+{
+  if (a.size() != b.size())
+    return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (std::memcmp (a[i].data, b[i].data, 3 * sizeof (float)) != 0)
+      return false;
+  return true;
+}
+
 /** \brief FNV-1a hash of the coordinates, colour and label of every point: a
  * fingerprint of a generated scene, to check that it stays the same. */
 inline std::uint64_t

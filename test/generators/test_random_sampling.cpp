@@ -114,6 +114,29 @@ TEST (SampleSphere, ExactCountOnTheSphereAndAreaUniform)
   EXPECT_NEAR (0.25, static_cast<double> (cap) / n, 0.01);
 }
 
+TEST (SampleTorus, ExactCountOnTheTorusAndAreaUniform)
+{
+  PortableRandom random (4);
+  const std::size_t n = 5003;
+  const double big = 0.5, small = 0.2;
+  const std::vector<SurfaceSample> samples =
+      pcl::tda::sampleTorus (big, small, n, random);
+  ASSERT_EQ (n, samples.size());
+  std::size_t outer = 0, upper = 0;
+  for (const SurfaceSample& s : samples) {
+    ASSERT_NEAR (1.0, s.normal.norm(), 1e-12);
+    const Eigen::Vector3d axis =
+        Eigen::Vector3d (s.point.x(), s.point.y(), 0.0).normalized();
+    ASSERT_TRUE (s.point.isApprox (big * axis + small * s.normal, 1e-12));
+    outer += s.point.head<2>().norm() > big;
+    upper += s.point.z() > 0.0;
+  }
+  // The outer half has area 2 pi small (pi big + 2 small) of 4 pi^2 big small.
+  const double outer_share = (M_PI * big + 2.0 * small) / (2.0 * M_PI * big);
+  EXPECT_NEAR (outer_share, static_cast<double> (outer) / n, 0.01);
+  EXPECT_NEAR (0.5, static_cast<double> (upper) / n, 0.01);
+}
+
 TEST (SampleDisc, OnePointPerCellOfEachRing)
 {
   PortableRandom random (2);

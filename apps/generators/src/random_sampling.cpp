@@ -61,6 +61,42 @@ sampleSphere (double radius, std::size_t count, PortableRandom& random)
 }
 
 std::vector<SurfaceSample>
+sampleTorus (double major_radius,
+             double minor_radius,
+             std::size_t count,
+             PortableRandom& random)
+{
+  const double big = major_radius, small = minor_radius;
+  const double h = std::sqrt (4.0 * M_PI * M_PI * big * small / count);
+  // Rings of equal width around the tube, points in proportion to ring area.
+  const std::size_t rows = std::max<std::size_t> (
+      3, static_cast<std::size_t> (std::lround (2.0 * M_PI * small / h)));
+  std::vector<double> weights (rows);
+  for (std::size_t j = 0; j < rows; ++j) {
+    const double phi0 = 2.0 * M_PI * j / rows;
+    const double phi1 = 2.0 * M_PI * (j + 1) / rows;
+    weights[j] = big * (phi1 - phi0) + small * (std::sin (phi1) - std::sin (phi0));
+  }
+  const std::vector<std::size_t> per_row = apportion (weights, count);
+  std::vector<SurfaceSample> samples;
+  samples.reserve (count);
+  for (std::size_t j = 0; j < rows; ++j)
+    for (std::size_t k = 0; k < per_row[j]; ++k) {
+      const double phi = 2.0 * M_PI * (j + random.uniform()) / rows;
+      const double theta = 2.0 * M_PI * (k + random.uniform()) / per_row[j];
+      const double rho = big + small * std::cos (phi);
+      const Eigen::Vector3d normal (std::cos (phi) * std::cos (theta),
+                                    std::cos (phi) * std::sin (theta),
+                                    std::sin (phi));
+      samples.push_back ({Eigen::Vector3d (rho * std::cos (theta),
+                                           rho * std::sin (theta),
+                                           small * std::sin (phi)),
+                          normal});
+    }
+  return samples;
+}
+
+std::vector<SurfaceSample>
 sampleDisc (double radius, double spacing, PortableRandom& random)
 {
   const std::size_t rings = cellCount (radius, spacing);

@@ -121,28 +121,11 @@ generateTorus (const TorusParameters& parameters)
   const float suggested =
       suggestedRadius (h, parameters.noise_sigma, std::min (small, big - small), name);
 
-  // Rings of equal width around the tube, points in proportion to ring area.
-  const std::size_t rows = std::max<std::size_t> (
-      3, static_cast<std::size_t> (std::lround (2.0 * M_PI * small / h)));
-  std::vector<double> weights (rows);
-  for (std::size_t j = 0; j < rows; ++j) {
-    const double phi0 = 2.0 * M_PI * j / rows;
-    const double phi1 = 2.0 * M_PI * (j + 1) / rows;
-    weights[j] = big * (phi1 - phi0) + small * (std::sin (phi1) - std::sin (phi0));
-  }
-  const std::vector<std::size_t> per_row = apportion (weights, n);
-
   PortableRandom random (parameters.seed);
   std::vector<Eigen::Vector3d> points;
   points.reserve (n);
-  for (std::size_t j = 0; j < rows; ++j)
-    for (std::size_t k = 0; k < per_row[j]; ++k) {
-      const double phi = 2.0 * M_PI * (j + random.uniform()) / rows;
-      const double theta = 2.0 * M_PI * (k + random.uniform()) / per_row[j];
-      const double rho = big + small * std::cos (phi);
-      points.emplace_back (
-          rho * std::cos (theta), rho * std::sin (theta), small * std::sin (phi));
-    }
+  for (const SurfaceSample& sample : sampleTorus (big, small, n, random))
+    points.push_back (sample.point);
   return makeShape (
       points, parameters.noise_sigma, random, TORUS_COLOUR, 1, 2, suggested);
 }

@@ -1,7 +1,7 @@
 #pragma once
 
 // Seeded random numbers and the samplers of points on surfaces that the synthetic
-// cloud generators (shapes.h, tabletop_scenes.h) share.
+// cloud generators (shapes.h, tabletop_scenes.h, hole_surfaces.h) share.
 
 #include <Eigen/Core>
 
@@ -112,6 +112,17 @@ cellCount (double length, double spacing);
  * their area, each point drawn uniformly in its own cell of the ring. */
 std::vector<SurfaceSample>
 sampleSphere (double radius, std::size_t count, PortableRandom& random);
+
+/** \brief Exactly \a count points on the torus around the z axis, centred at the
+ * origin, with tube centre-line radius \a major_radius and tube radius
+ * \a minor_radius (below \a major_radius), area-uniform: rings of equal width
+ * around the tube get points in proportion to their area, each point drawn
+ * uniformly in its own cell of the ring. */
+std::vector<SurfaceSample>
+sampleTorus (double major_radius,
+             double minor_radius,
+             std::size_t count,
+             PortableRandom& random);
 
 /** \brief Points on the disc of radius \a radius in the plane z = 0 (normal +z), one
  * per cell of about \a spacing x \a spacing: rings of equal width, cells of equal

@@ -1,0 +1,272 @@
+#pragma once
+
+#include <pcl/features/feature.h>
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/common/progress.h>
+#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/features/hole_rims.h>
+#include <pcl/tda/search/point_spacing.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief How many nearest neighbours measure a surface's spacing. */
+constexpr std::size_t SURFACE_SPACING_NEIGHBORS = 6;
+
+/** \brief The sampling spacing of a surface: the square root of the area per point,
+ * estimated from the median distance d_k to the k-th nearest point (k =
+ * SURFACE_SPACING_NEIGHBORS) as d_k sqrt(pi / k), since a disk of radius d_k holds
+ * about k points. Unlike the nearest-neighbour distance it does not depend on how
+ * regular the sampling is (a jittered grid and a random sample of the same density
+ * give the same value), nor on scan lines that are denser along than across. 0 when
+ * the cloud has fewer than k + 1 distinct finite points. */
+template <typename PointT>
+double
+surfaceSpacing (const pcl::PointCloud<PointT>& cloud)
+{
+  return pointSpacing (cloud, 0.5, SURFACE_SPACING_NEIGHBORS) *
+         std::sqrt (M_PI / static_cast<double> (SURFACE_SPACING_NEIGHBORS));
+}
+
+/** \brief The holes of a scanned surface from its minimal 1-cycles (thesis Ch. 5,
+ * Alg 5.15), with per-point boundary flags that take the place of
+ * pcl::BoundaryEstimation in a pipeline.
+ *
+ * The finite points (among the indices) are the vertices of the Vietoris-Rips
+ * complex VR_r (edges and triangles) at the radius r. Its persistence (H0 and H1)
+ * gives the essential 1-classes: the 1-cycles that no triangle fills at r. Each class
+ * gives a minimal 1-cycle (minimalCycles()), and a cycle that the surface around it
+ * spans is a hole (holeRims(): the test that keeps loops around handles and tubes
+ * out). A gap of the sampling smaller than about r is filled by triangles and is not
+ * a class; a hole wider than about 2 r stays one.
+ *
+ * compute() gives one pcl::Boundary per index: boundary_point is 1 for the points of
+ * the rim band: the rim's points and the points within the band width of a rim
+ * segment (on the surface's side, as the hole's side is empty), the band
+ * pcl::BoundaryEstimation flags along a border. getHoles() gives every hole's rim
+ * in cycle order as input indices, with its perimeter, area, plane and birth.
+ *
+ * Homology sees a hole only where it is a cycle that bounds nothing: on a closed
+ * surface (a sphere, a torus) with k holes there are k - 1 independent hole classes
+ * besides the handles, so one hole of a closed surface is not found; a surface that
+ * is open elsewhere (a patch, a scan of one side of an object) has all k.
+ *
+ * The results depend neither on the input order nor on the number of threads.
+ *
+ * \code
+ * pcl::tda::HoleBoundaryEstimation<pcl::PointXYZ, pcl::Boundary> hb;
+ * hb.setInputCloud (cloud);
+ * hb.setRadius (0.003);          // or automatic
+ * pcl::PointCloud<pcl::Boundary> flags;
+ * hb.compute (flags);
+ * for (const auto& hole : hb.getHoles ()) ...
+ * \endcode */
+template <typename PointInT, typename PointOutT>
+class HoleBoundaryEstimation : public pcl::Feature<PointInT, PointOutT> {
+public:
+  using Ptr = shared_ptr<HoleBoundaryEstimation<PointInT, PointOutT>>;
+  using ConstPtr = shared_ptr<const HoleBoundaryEstimation<PointInT, PointOutT>>;
+  using PointCloudOut = typename pcl::Feature<PointInT, PointOutT>::PointCloudOut;
+
+  /** \brief The automatic radius in units of the surface spacing (see setRadius()). */
+  static constexpr double AUTO_RADIUS_PER_SPACING = 1.6;
+  /** \brief The automatic rim band width in units of the surface spacing. */
+  static constexpr double AUTO_BAND_PER_SPACING = 1.5;
+  /** \brief The default largest tilt of a hole's rim against its surface. */
+  static constexpr double DEFAULT_MAX_TILT_DEGREES = 45.0;
+
+  HoleBoundaryEstimation() { this->feature_name_ = "HoleBoundaryEstimation"; }
+
+  /** \brief Sets the radius r of the complex; 0 (the default) chooses it:
+   * AUTO_RADIUS_PER_SPACING times the surface spacing (surfaceSpacing()). */
+  void
+  setRadius (double radius)
+  {
+    radius_ = radius;
+  }
+
+  double
+  getRadius () const
+  {
+    return radius_;
+  }
+
+  /** \brief Sets the largest number of points of a rim; a longer minimal cycle is
+   * not reported (the thesis caps rims at 8, 16 or 32 points). 0 (default): no
+   * limit. */
+  void
+  setMaxCycleLength (std::size_t points)
+  {
+    max_cycle_length_ = points;
+  }
+
+  std::size_t
+  getMaxCycleLength () const
+  {
+    return max_cycle_length_;
+  }
+
+  /** \brief Sets the largest median angle, in degrees (in [0, 90]), between a rim's
+   * plane and the surface at its points for the rim to be a hole; loops around
+   * handles and tubes stand at about 90 degrees. */
+  void
+  setMaxTiltAngle (double degrees)
+  {
+    max_tilt_degrees_ = degrees;
+  }
+
+  double
+  getMaxTiltAngle () const
+  {
+    return max_tilt_degrees_;
+  }
+
+  /** \brief Sets the smallest radius of a hole: the radius of the largest empty
+   * disk inside its rim must be at least this. 0 (the default): the radius of the
+   * complex, so that the gaps of the sampling, which the complex's triangles nearly
+   * fill, are not holes. */
+  void
+  setMinHoleRadius (double radius)
+  {
+    min_hole_radius_ = radius;
+  }
+
+  double
+  getMinHoleRadius () const
+  {
+    return min_hole_radius_;
+  }
+
+  /** \brief Sets the width of the flagged rim band (see rimBand()), at most the
+   * radius; 0 (the default): AUTO_BAND_PER_SPACING times the surface spacing, capped
+   * at the radius. */
+  void
+  setRimBandWidth (double width)
+  {
+    band_width_ = width;
+  }
+
+  double
+  getRimBandWidth () const
+  {
+    return band_width_;
+  }
+
+  /** \brief Sets the memory the complex may take, in bytes; a larger complex is
+   * refused before it is stored. Default: half of the physical memory. */
+  void
+  setMemoryLimit (std::size_t bytes)
+  {
+    memory_limit_ = bytes;
+  }
+
+  std::size_t
+  getMemoryLimit () const
+  {
+    return memory_limit_;
+  }
+
+  /** \brief Sets the number of OpenMP threads (0: OpenMP's default). The results do
+   * not depend on it. */
+  void
+  setNumberOfThreads (unsigned int threads)
+  {
+    threads_ = threads;
+  }
+
+  unsigned int
+  getNumberOfThreads () const
+  {
+    return threads_;
+  }
+
+  /** \brief Sets a callback told the progress of the complex's construction. */
+  void
+  setProgressCallback (const ProgressCallback& progress)
+  {
+    progress_ = progress;
+  }
+
+  /** \brief The holes found by the last compute(), longest rim first; the rims'
+   * points are input indices. */
+  const std::vector<HoleRim>&
+  getHoles () const
+  {
+    return holes_;
+  }
+
+  /** \brief The persistence diagram (dimensions 0 and 1) of the complex of the last
+   * compute(); the holes are among its essential 1-classes. */
+  const PersistenceDiagram&
+  getPersistenceDiagram () const
+  {
+    return diagram_;
+  }
+
+  /** \brief The radius used by the last compute() (the chosen one when automatic). */
+  double
+  getUsedRadius () const
+  {
+    return used_radius_;
+  }
+
+  /** \brief The rim band width used by the last compute(). */
+  double
+  getUsedRimBandWidth () const
+  {
+    return used_band_width_;
+  }
+
+  /** \brief The complex of the last compute(): its sizes, for reports. */
+  const FilteredComplex&
+  getComplex () const
+  {
+    return complex_;
+  }
+
+protected:
+  using pcl::Feature<PointInT, PointOutT>::getClassName;
+  using pcl::Feature<PointInT, PointOutT>::indices_;
+  using pcl::Feature<PointInT, PointOutT>::input_;
+
+  /** \brief Checks the input and the parameters; unlike pcl::Feature, no search
+   * radius or k is needed and no search tree is built. */
+  bool
+  initCompute () override;
+
+  void
+  computeFeature (PointCloudOut& output) override;
+
+private:
+  /** \brief Finds the holes of the input; false, with a PCL_ERROR, on failure. */
+  bool
+  findHoles (std::vector<std::uint8_t>& band);
+
+  double radius_ = 0.0;
+  std::size_t max_cycle_length_ = 0;
+  double max_tilt_degrees_ = DEFAULT_MAX_TILT_DEGREES;
+  double band_width_ = 0.0;
+  double min_hole_radius_ = 0.0;
+  std::size_t memory_limit_ = defaultMemoryLimit();
+  unsigned int threads_ = 0;
+  ProgressCallback progress_;
+
+  FilteredComplex complex_;
+  std::vector<HoleRim> holes_;
+  PersistenceDiagram diagram_;
+  double used_radius_ = 0.0;
+  double used_band_width_ = 0.0;
+};
+
+} // namespace tda
+} // namespace pcl
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl/tda/features/impl/hole_boundary_estimation.hpp>
+#endif

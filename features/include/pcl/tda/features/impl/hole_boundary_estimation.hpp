@@ -1,0 +1,160 @@
+#pragma once
+
+#include <pcl/common/point_tests.h>
+#include <pcl/tda/common/edge_adjacency.h>
+#include <pcl/tda/common/persistence_engines.h>
+#include <pcl/tda/features/hole_boundary_estimation.h>
+#include <pcl/tda/features/minimal_cycles.h>
+#include <pcl/tda/search/vietoris_rips_builder.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace pcl {
+namespace tda {
+
+template <typename PointInT, typename PointOutT>
+bool
+HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
+{
+  if (!pcl::PCLBase<PointInT>::initCompute()) {
+    PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
+               getClassName().c_str());
+    return false;
+  }
+  if (!(radius_ >= 0.0) || !std::isfinite (radius_)) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The radius must be positive and finite, or 0 "
+               "to choose it (got %g).\n",
+               getClassName().c_str(),
+               radius_);
+    return false;
+  }
+  if (!(max_tilt_degrees_ >= 0.0 && max_tilt_degrees_ <= 90.0)) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The max tilt angle must be in [0, 90] degrees "
+               "(got %g).\n",
+               getClassName().c_str(),
+               max_tilt_degrees_);
+    return false;
+  }
+  if (!(band_width_ >= 0.0) || !std::isfinite (band_width_)) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The rim band width must be positive and "
+               "finite, or 0 to choose it (got %g).\n",
+               getClassName().c_str(),
+               band_width_);
+    return false;
+  }
+  return true;
+}
+
+template <typename PointInT, typename PointOutT>
+bool
+HoleBoundaryEstimation<PointInT, PointOutT>::findHoles (std::vector<std::uint8_t>& band)
+{
+  // In a canonical order, so that the sample the spacing is measured on, and so the
+  // radius, do not depend on the input order.
+  pcl::PointCloud<PointInT> points (*input_, *indices_);
+  std::sort (points.begin(), points.end(), [] (const PointInT& a, const PointInT& b) {
+    return std::tie (a.x, a.y, a.z) < std::tie (b.x, b.y, b.z);
+  });
+  const double spacing = surfaceSpacing (points);
+  if (!(spacing > 0.0)) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The input has fewer than %zu distinct finite "
+               "points (%zu indexed): there is no surface.\n",
+               getClassName().c_str(),
+               SURFACE_SPACING_NEIGHBORS + 1,
+               indices_->size());
+    return false;
+  }
+  used_radius_ = radius_ > 0.0 ? radius_ : AUTO_RADIUS_PER_SPACING * spacing;
+  used_band_width_ = band_width_ > 0.0
+                         ? band_width_
+                         : std::min (AUTO_BAND_PER_SPACING * spacing, used_radius_);
+  if (used_band_width_ > used_radius_) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The rim band width (%g) must not exceed the "
+               "radius (%g): the band is searched within two edges of a rim.\n",
+               getClassName().c_str(),
+               used_band_width_,
+               used_radius_);
+    return false;
+  }
+
+  VietorisRipsBuilder<PointInT> builder;
+  builder.setInputCloud (input_);
+  builder.setIndices (indices_);
+  builder.setRadius (used_radius_);
+  builder.setMaxDimension (2);
+  builder.setNumberOfThreads (threads_);
+  builder.setMemoryLimit (memory_limit_);
+  builder.setProgressCallback (progress_);
+  if (!builder.compute (complex_)) {
+    PCL_ERROR ("[pcl::tda::%s::compute] Cannot build the complex (see above).\n",
+               getClassName().c_str());
+    return false;
+  }
+  if (complex_.numTriangles() == 0) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The complex of radius %g has no triangle "
+               "(%zu points, %zu edges, point spacing %g): the radius is too small to "
+               "make a surface. Use a radius of about %g times the spacing.\n",
+               getClassName().c_str(),
+               used_radius_,
+               complex_.numVertices(),
+               complex_.numEdges(),
+               spacing,
+               AUTO_RADIUS_PER_SPACING);
+    return false;
+  }
+
+  const PersistenceResult result = computePersistence (complex_);
+  diagram_ = result.diagram (complex_);
+  std::vector<Point3d> positions (complex_.numVertices());
+  const pcl::Indices& point_indices = complex_.pointIndices();
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    const PointInT& p = (*input_)[point_indices[v]];
+    positions[v] = {p.x, p.y, p.z};
+  }
+  const EdgeAdjacency adjacency =
+      buildEdgeAdjacency (complex_.numVertices(), complex_.edges());
+  const double min_clearance = min_hole_radius_ > 0.0 ? min_hole_radius_ : used_radius_;
+  holes_ =
+      holeRims (minimalCycles (complex_, result, positions, min_clearance, threads_),
+                complex_,
+                positions,
+                adjacency,
+                max_tilt_degrees_,
+                max_cycle_length_,
+                min_clearance);
+  const std::vector<std::uint8_t> vertex_band =
+      rimBand (holes_, positions, adjacency, used_band_width_, spacing);
+  band.assign (input_->size(), 0);
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    band[point_indices[v]] = vertex_band[v];
+  for (HoleRim& hole : holes_)
+    for (SimplexIndex& v : hole.rim)
+      v = static_cast<SimplexIndex> (point_indices[v]);
+  return true;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+HoleBoundaryEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
+{
+  holes_.clear();
+  diagram_.clear();
+  complex_ = FilteredComplex();
+  std::vector<std::uint8_t> band;
+  if (!findHoles (band)) {
+    holes_.clear();
+    output.width = output.height = 0;
+    output.clear();
+    return;
+  }
+  for (std::size_t i = 0; i < indices_->size(); ++i)
+    output[i].boundary_point = band[(*indices_)[i]];
+}
+
+} // namespace tda
+} // namespace pcl
+
+#define PCL_INSTANTIATE_HoleBoundaryEstimation(T, OutT)                                \
+  template class PCL_EXPORTS pcl::tda::HoleBoundaryEstimation<T, OutT>;

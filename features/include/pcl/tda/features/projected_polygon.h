@@ -1,0 +1,93 @@
+#pragma once
+
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/point3d.h>
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief A closed cycle of points seen in its own plane: the points projected onto
+ * their least-squares plane, as the polygon of the point-in-polygon tests of
+ * Alg 5.15 (thesis Sec 5.4.1) and the outline whose area a hole reports.
+ *
+ * Containment follows the even-odd rule (a ray from the point crosses the polygon an
+ * odd number of times), so a cycle whose projection crosses itself still has a
+ * well-defined inside. The edges are bucketed by rows of the plane, so that a test
+ * looks at the edges of one row only. */
+class ProjectedPolygon {
+public:
+  /** \param[in] points the positions of all vertices
+   * \param[in] cycle the vertices of the cycle in order (at least 3); the polygon
+   * closes from the last back to the first */
+  ProjectedPolygon (const std::vector<Point3d>& points,
+                    const std::vector<SimplexIndex>& cycle);
+
+  /** \brief The coordinates of \a p in the plane. */
+  Eigen::Vector2d
+  project (const Point3d& p) const;
+
+  /** \brief True when \a q (plane coordinates) is inside the polygon. */
+  bool
+  contains (const Eigen::Vector2d& q) const;
+
+  /** \brief The abscissas, in increasing order, where the polygon crosses the line
+   * of ordinate \a y: a point of that line is inside when an odd number of them
+   * lie right of it (the rule of contains()). */
+  std::vector<double>
+  crossings (double y) const;
+
+  /** \brief The area of the polygon (the absolute shoelace sum). */
+  double
+  area () const;
+
+  /** \brief The mean of the cycle's points. */
+  const Eigen::Vector3d&
+  centroid () const
+  {
+    return centroid_;
+  }
+
+  /** \brief The plane's first and second axes: a point with plane coordinates
+   * (a, b) is centroid() + a axisU() + b axisV(). */
+  const Eigen::Vector3d&
+  axisU () const
+  {
+    return axis_u_;
+  }
+
+  const Eigen::Vector3d&
+  axisV () const
+  {
+    return axis_v_;
+  }
+
+  /** \brief The unit normal of the plane (sign arbitrary). */
+  const Eigen::Vector3d&
+  normal () const
+  {
+    return normal_;
+  }
+
+private:
+  /** The row of height \a y, clamped to the rows. */
+  std::size_t
+  rowOf (double y) const;
+
+  Eigen::Vector3d centroid_;
+  Eigen::Vector3d normal_;
+  Eigen::Vector3d axis_u_;
+  Eigen::Vector3d axis_v_;
+  std::vector<Eigen::Vector2d> corners_;
+  double row_low_ = 0.0;
+  double row_height_ = 1.0;
+  /** Per row, the edges (by their first corner) whose span in y meets the row. */
+  std::vector<std::vector<std::uint32_t>> rows_;
+};
+
+} // namespace tda
+} // namespace pcl

@@ -1,0 +1,185 @@
+#include <pcl/tda/common/plane_fit.h>
+#include <pcl/tda/features/distance_grid.h>
+#include <pcl/tda/features/hole_rims.h>
+#include <pcl/tda/features/projected_polygon.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace pcl {
+namespace tda {
+
+namespace {
+
+/** The plane of the surface at \a v: fitted to v and its neighbours. */
+Eigen::Vector3f
+surfaceNormal (SimplexIndex v,
+               const std::vector<Point3d>& positions,
+               const EdgeAdjacency& adjacency)
+{
+  PlaneFit plane (positions[v]);
+  plane.add (positions[v]);
+  for (const auto& entry : adjacency.neighbors (v))
+    plane.add (positions[entry.neighbor]);
+  return plane.normal();
+}
+
+double
+medianTilt (const std::vector<SimplexIndex>& rim,
+            const Eigen::Vector3f& rim_normal,
+            const std::vector<Point3d>& positions,
+            const EdgeAdjacency& adjacency)
+{
+  std::vector<double> tilts;
+  tilts.reserve (rim.size());
+  for (const SimplexIndex v : rim) {
+    const double cosine = std::min (
+        1.0f, std::abs (surfaceNormal (v, positions, adjacency).dot (rim_normal)));
+    tilts.push_back (std::acos (cosine) * 180.0 / M_PI);
+  }
+  const auto middle = tilts.begin() + static_cast<std::ptrdiff_t> (tilts.size() / 2);
+  std::nth_element (tilts.begin(), middle, tilts.end());
+  return *middle;
+}
+
+} // namespace
+
+std::vector<HoleRim>
+holeRims (const std::vector<MinimalCycle>& cycles,
+          const FilteredComplex& complex,
+          const std::vector<Point3d>& positions,
+          const EdgeAdjacency& adjacency,
+          double max_tilt_degrees,
+          std::size_t max_cycle_length,
+          double min_clearance)
+{
+  struct Found {
+    const MinimalCycle* cycle;
+    ProjectedPolygon polygon;
+    HoleRim hole;
+
+    bool
+    surrounds (const Point3d& point) const
+    {
+      return polygon.contains (polygon.project (point));
+    }
+
+    Point3d
+    center () const
+    {
+      return {polygon.centroid().x(), polygon.centroid().y(), polygon.centroid().z()};
+    }
+  };
+  std::vector<Found> found;
+  for (const MinimalCycle& cycle : cycles) {
+    const std::vector<SimplexIndex>& rim = cycle.vertices;
+    if (rim.size() < 3 || (max_cycle_length > 0 && rim.size() > max_cycle_length) ||
+        cycle.clearance < min_clearance)
+      continue;
+    const ProjectedPolygon polygon (positions, rim);
+    HoleRim hole;
+    hole.normal = polygon.normal().cast<float>();
+    hole.tilt_degrees = medianTilt (rim, hole.normal, positions, adjacency);
+    if (hole.tilt_degrees > max_tilt_degrees)
+      continue;
+    hole.rim = rim;
+    for (std::size_t i = 0; i < rim.size(); ++i)
+      hole.perimeter +=
+          distance (positions[rim[i]], positions[rim[(i + 1) % rim.size()]]);
+    hole.area = polygon.area();
+    hole.clearance = cycle.clearance;
+    hole.centroid = polygon.centroid().cast<float>();
+    hole.birth = complex.edges()[cycle.essential_edge].value;
+    found.push_back ({&cycle, polygon, std::move (hole)});
+  }
+  // Several classes can go around the same empty region: keep its shortest rim.
+  const auto byPerimeter = [] (const Found& a, const Found& b) {
+    return std::tie (a.hole.perimeter, a.cycle->essential_edge) <
+           std::tie (b.hole.perimeter, b.cycle->essential_edge);
+  };
+  std::sort (found.begin(), found.end(), byPerimeter);
+  std::vector<Found> kept;
+  for (Found& candidate : found) {
+    const bool same_hole = std::any_of (kept.begin(), kept.end(), [&] (const Found& k) {
+      return k.surrounds (candidate.cycle->hole_center) ||
+             candidate.surrounds (k.cycle->hole_center) ||
+             k.surrounds (candidate.center()) || candidate.surrounds (k.center());
+    });
+    if (!same_hole)
+      kept.push_back (std::move (candidate));
+  }
+  std::sort (kept.begin(), kept.end(), [] (const Found& a, const Found& b) {
+    return std::make_tuple (b.hole.rim.size(), a.cycle->essential_edge) <
+           std::make_tuple (a.hole.rim.size(), b.cycle->essential_edge);
+  });
+  std::vector<HoleRim> holes;
+  holes.reserve (kept.size());
+  for (Found& k : kept)
+    holes.push_back (std::move (k.hole));
+  return holes;
+}
+
+std::vector<std::uint8_t>
+rimBand (const std::vector<HoleRim>& holes,
+         const std::vector<Point3d>& positions,
+         const EdgeAdjacency& adjacency,
+         double band_width,
+         double spacing)
+{
+  std::vector<std::uint8_t> band (positions.size(), 0);
+  std::vector<std::uint8_t> seen (positions.size(), 0);
+  for (const HoleRim& hole : holes) {
+    const ProjectedPolygon polygon (positions, hole.rim);
+    // The points within two edges of the rim: every point between the rim and the
+    // hole, and the surface beside the rim.
+    std::vector<SimplexIndex> near = hole.rim;
+    for (const SimplexIndex v : near)
+      seen[v] = 1;
+    for (std::size_t head = 0, end = near.size(), hop = 0; hop < 2;
+         ++hop, end = near.size())
+      for (; head < end; ++head)
+        for (const auto& entry : adjacency.neighbors (near[head]))
+          if (!seen[entry.neighbor]) {
+            seen[entry.neighbor] = 1;
+            near.push_back (entry.neighbor);
+          }
+    std::vector<Eigen::Vector2d> projected;
+    projected.reserve (near.size());
+    for (const SimplexIndex v : near) {
+      projected.push_back (polygon.project (positions[v]));
+      seen[v] = 0;
+    }
+    // The hole's empty region: the cells inside the rim at least a spacing away
+    // from every point.
+    Eigen::Vector2d low = projected.front(), high = projected.front();
+    for (std::size_t i = 0; i < hole.rim.size(); ++i) {
+      low = low.cwiseMin (projected[i]);
+      high = high.cwiseMax (projected[i]);
+    }
+    const double margin = band_width + spacing;
+    low -= Eigen::Vector2d::Constant (margin);
+    high += Eigen::Vector2d::Constant (margin);
+    const double cell = std::max (spacing / 4.0, (high - low).maxCoeff() / 256.0);
+    const DistanceGrid emptiness (low, high, cell, projected);
+    std::vector<Eigen::Vector2d> empty;
+    for (int iy = 0; iy < emptiness.height(); ++iy)
+      for (int ix = 0; ix < emptiness.width(); ++ix)
+        if (emptiness.distance (ix, iy) >= spacing &&
+            polygon.contains (emptiness.center (ix, iy)))
+          empty.push_back (emptiness.center (ix, iy));
+    // A point is in the band when it is within the band width of the hole's edge,
+    // which lies about half a spacing outside the empty region.
+    const DistanceGrid to_empty (low, high, cell, empty);
+    for (std::size_t i = 0; i < near.size(); ++i) {
+      int ix, iy;
+      if (to_empty.cellOf (projected[i], ix, iy) &&
+          to_empty.distance (ix, iy) <= band_width + spacing / 2.0)
+        band[near[i]] = 1;
+    }
+  }
+  return band;
+}
+
+} // namespace tda
+} // namespace pcl

@@ -1,0 +1,385 @@
+#include <pcl/tda/common/edge_adjacency.h>
+#include <pcl/tda/features/distance_grid.h>
+#include <pcl/tda/features/minimal_cycles.h>
+#include <pcl/tda/features/projected_polygon.h>
+#include <pcl/tda/search/radius_edges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <queue>
+#include <utility>
+
+namespace pcl {
+namespace tda {
+
+namespace {
+
+/** How often steps 2-4 of Alg 5.15 may tighten one cycle. */
+constexpr int MAX_REFINEMENTS = 4;
+
+/** The spanning forest of the negative edges, rooted at the first vertex of each
+ * tree, so that the path between two vertices of a tree costs its own length. */
+class RootedForest {
+public:
+  explicit RootedForest (const EdgeAdjacency& forest)
+  : parent_ (forest.numVertices(), INVALID_SIMPLEX), depth_ (forest.numVertices(), 0)
+  {
+    std::vector<std::uint8_t> seen (forest.numVertices(), 0);
+    std::vector<SimplexIndex> queue;
+    for (SimplexIndex root = 0; root < forest.numVertices(); ++root) {
+      if (seen[root])
+        continue;
+      seen[root] = 1;
+      queue.assign (1, root);
+      for (std::size_t head = 0; head < queue.size(); ++head) {
+        const SimplexIndex v = queue[head];
+        for (const auto& entry : forest.neighbors (v))
+          if (!seen[entry.neighbor]) {
+            seen[entry.neighbor] = 1;
+            parent_[entry.neighbor] = v;
+            depth_[entry.neighbor] = depth_[v] + 1;
+            queue.push_back (entry.neighbor);
+          }
+      }
+    }
+  }
+
+  /** The vertices of the tree path from \a u to \a v, both included. */
+  std::vector<SimplexIndex>
+  path (SimplexIndex u, SimplexIndex v) const
+  {
+    std::vector<SimplexIndex> from_u, from_v;
+    while (depth_[u] > depth_[v]) {
+      from_u.push_back (u);
+      u = parent_[u];
+    }
+    while (depth_[v] > depth_[u]) {
+      from_v.push_back (v);
+      v = parent_[v];
+    }
+    while (u != v) {
+      from_u.push_back (u);
+      from_v.push_back (v);
+      u = parent_[u];
+      v = parent_[v];
+    }
+    from_u.push_back (u);
+    from_u.insert (from_u.end(), from_v.rbegin(), from_v.rend());
+    return from_u;
+  }
+
+private:
+  std::vector<SimplexIndex> parent_;
+  std::vector<std::uint32_t> depth_;
+};
+
+/** Empty regions inside a polygon are searched on a grid of at most this many cells
+ * a side over the polygon's box. */
+constexpr int EMPTINESS_GRID = 128;
+
+struct EmptyPoint {
+  Eigen::Vector2d position;
+  double clearance = 0.0;
+};
+
+/** The empty regions inside \a polygon: the connected groups of grid cells inside
+ * it whose distance to every point of \a points (their clearance) is at least
+ * \a min_clearance, each given by its cell of largest clearance. */
+std::vector<EmptyPoint>
+emptyRegions (const ProjectedPolygon& polygon,
+              const std::vector<Eigen::Vector2d>& corners,
+              const std::vector<Eigen::Vector2d>& points,
+              double min_cell,
+              double min_clearance)
+{
+  Eigen::Vector2d low = corners.front(), high = corners.front();
+  for (const Eigen::Vector2d& c : corners) {
+    low = low.cwiseMin (c);
+    high = high.cwiseMax (c);
+  }
+  const double cell = std::max (min_cell, (high - low).maxCoeff() / EMPTINESS_GRID);
+  const DistanceGrid grid (low, high, cell, points);
+  const int nx = grid.width(), ny = grid.height();
+  const auto center = [&] (int ix, int iy) { return grid.center (ix, iy); };
+  // The cells inside the polygon whose clearance reaches the minimum, grouped
+  // into 8-connected regions: one empty region each, found at its widest cell.
+  std::vector<double> clearance (static_cast<std::size_t> (nx) * ny, 0.0);
+  for (int iy = 0; iy < ny; ++iy) {
+    const std::vector<double> xs = polygon.crossings (center (0, iy).y());
+    std::size_t left = 0; // crossings left of the cell's centre
+    for (int ix = 0; ix < nx; ++ix) {
+      while (left < xs.size() && xs[left] <= center (ix, iy).x())
+        ++left;
+      if ((xs.size() - left) % 2 == 1)
+        clearance[static_cast<std::size_t> (iy) * nx + ix] = grid.distance (ix, iy);
+    }
+  }
+  std::vector<EmptyPoint> regions;
+  std::vector<std::uint8_t> visited (clearance.size(), 0);
+  std::vector<std::size_t> stack;
+  for (std::size_t first = 0; first < clearance.size(); ++first) {
+    if (visited[first] || !(clearance[first] >= min_clearance))
+      continue;
+    std::size_t widest = first;
+    visited[first] = 1;
+    stack.assign (1, first);
+    while (!stack.empty()) {
+      const std::size_t c = stack.back();
+      stack.pop_back();
+      if (clearance[c] > clearance[widest])
+        widest = c;
+      const int cx = static_cast<int> (c % nx), cy = static_cast<int> (c / nx);
+      for (int y = std::max (0, cy - 1); y <= std::min (ny - 1, cy + 1); ++y)
+        for (int x = std::max (0, cx - 1); x <= std::min (nx - 1, cx + 1); ++x) {
+          const std::size_t next = static_cast<std::size_t> (y) * nx + x;
+          if (!visited[next] && clearance[next] >= min_clearance) {
+            visited[next] = 1;
+            stack.push_back (next);
+          }
+        }
+    }
+    regions.push_back (
+        {center (static_cast<int> (widest % nx), static_cast<int> (widest / nx)),
+         clearance[widest]});
+  }
+  return regions;
+}
+
+/** Steps 2-4 of Alg 5.15 for one class at a time, with per-vertex scratch arrays
+ * reset by a stamp (one object per thread). */
+class RimFinder {
+public:
+  RimFinder (const FilteredComplex& complex,
+             const EdgeAdjacency& graph,
+             const std::vector<Point3d>& positions,
+             double min_cell,
+             double min_clearance)
+  : complex_ (complex)
+  , graph_ (graph)
+  , positions_ (positions)
+  , min_cell_ (min_cell)
+  , min_clearance_ (min_clearance)
+  , stamp_ (positions.size(), 0)
+  , position_in_cycle_ (positions.size(), 0)
+  , projected_ (positions.size())
+  , local_ (positions.size(), 0)
+  {}
+
+  /** The rims around the empty regions inside the polygon of \a cycle, each
+   * found again in the plane of its own points (the plane of a long initial cycle
+   * on a curved surface can be far from the hole's): a rim whose own polygon holds
+   * no empty region wide enough is dropped. */
+  std::vector<MinimalCycle>
+  rims (const std::vector<SimplexIndex>& cycle, SimplexIndex essential_edge)
+  {
+    std::vector<MinimalCycle> result;
+    for (const MinimalCycle& first : windingRims (cycle, essential_edge)) {
+      std::vector<MinimalCycle> again = windingRims (first.vertices, essential_edge);
+      const auto widest =
+          std::max_element (again.begin(),
+                            again.end(),
+                            [] (const MinimalCycle& a, const MinimalCycle& b) {
+                              return a.clearance < b.clearance;
+                            });
+      if (widest != again.end())
+        result.push_back (std::move (*widest));
+    }
+    return result;
+  }
+
+private:
+  /** The shortest cycles around the empty regions inside the polygon of \a cycle. */
+  std::vector<MinimalCycle>
+  windingRims (const std::vector<SimplexIndex>& cycle, SimplexIndex essential_edge)
+  {
+    const ProjectedPolygon polygon (positions_, cycle);
+    ++generation_;
+    cycle_length_ = static_cast<std::uint32_t> (cycle.size());
+    std::vector<SimplexIndex> region = cycle;
+    std::vector<Eigen::Vector2d> corners;
+    for (std::size_t i = 0; i < cycle.size(); ++i) {
+      stamp_[cycle[i]] = generation_;
+      position_in_cycle_[cycle[i]] = static_cast<std::uint32_t> (i + 1);
+      projected_[cycle[i]] = polygon.project (positions_[cycle[i]]);
+      corners.push_back (projected_[cycle[i]]);
+    }
+    for (std::size_t head = 0; head < region.size(); ++head)
+      for (const auto& entry : graph_.neighbors (region[head])) {
+        const SimplexIndex w = entry.neighbor;
+        if (stamp_[w] == generation_)
+          continue;
+        const Eigen::Vector2d q = polygon.project (positions_[w]);
+        if (!polygon.contains (q))
+          continue;
+        stamp_[w] = generation_;
+        position_in_cycle_[w] = 0;
+        projected_[w] = q;
+        region.push_back (w);
+      }
+    std::vector<Eigen::Vector2d> region_points;
+    region_points.reserve (region.size());
+    for (const SimplexIndex v : region)
+      region_points.push_back (projected_[v]);
+    std::vector<MinimalCycle> result;
+    for (const EmptyPoint& hole :
+         emptyRegions (polygon, corners, region_points, min_cell_, min_clearance_)) {
+      MinimalCycle rim;
+      rim.essential_edge = essential_edge;
+      rim.vertices = windingCycle (polygon, region, hole.position);
+      rim.clearance = hole.clearance;
+      const Eigen::Vector3d center = polygon.centroid() +
+                                     hole.position.x() * polygon.axisU() +
+                                     hole.position.y() * polygon.axisV();
+      rim.hole_center = {center.x(), center.y(), center.z()};
+      if (rim.vertices.size() >= 3)
+        result.push_back (std::move (rim));
+    }
+    return result;
+  }
+
+  bool
+  admissible (const ProjectedPolygon& polygon, SimplexIndex a, SimplexIndex b) const
+  {
+    const std::uint32_t first = std::min (position_in_cycle_[a], position_in_cycle_[b]);
+    const std::uint32_t last = std::max (position_in_cycle_[a], position_in_cycle_[b]);
+    if (first != 0 && (first + 1 == last || (first == 1 && last == cycle_length_)))
+      return true; // an edge of the cycle itself (the last closes it)
+    return polygon.contains ((projected_[a] + projected_[b]) / 2.0);
+  }
+
+  /** True when the segment from \a a to \a b crosses the ray from \a p along the
+   * first axis of the plane. */
+  static bool
+  crossesRay (const Eigen::Vector2d& a,
+              const Eigen::Vector2d& b,
+              const Eigen::Vector2d& p)
+  {
+    return (a.y() > p.y()) != (b.y() > p.y()) &&
+           p.x() < a.x() + (p.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y());
+  }
+
+  /** The shortest closed path through the region that winds around \a p an odd
+   * number of times: Dijkstra on two copies of the region (the parity of the
+   * crossings of a ray from \a p), from the region's vertex nearest to \a p to its
+   * copy. */
+  std::vector<SimplexIndex>
+  windingCycle (const ProjectedPolygon& polygon,
+                const std::vector<SimplexIndex>& region,
+                const Eigen::Vector2d& p)
+  {
+    std::size_t start = 0;
+    for (std::size_t i = 1; i < region.size(); ++i)
+      if ((projected_[region[i]] - p).squaredNorm() <
+          (projected_[region[start]] - p).squaredNorm())
+        start = i;
+    // Local ids: the region's vertices, each in two copies (parity 0 and 1).
+    for (std::size_t i = 0; i < region.size(); ++i)
+      local_[region[i]] = static_cast<std::uint32_t> (i);
+    const std::size_t n = region.size();
+    std::vector<double> distance (2 * n, std::numeric_limits<double>::infinity());
+    std::vector<std::uint32_t> previous (2 * n,
+                                         std::numeric_limits<std::uint32_t>::max());
+    using Item = std::pair<double, std::uint32_t>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
+    const auto source = static_cast<std::uint32_t> (start);
+    const auto target = static_cast<std::uint32_t> (start + n);
+    distance[source] = 0.0;
+    queue.push ({0.0, source});
+    while (!queue.empty()) {
+      const auto [d, id] = queue.top();
+      queue.pop();
+      if (d > distance[id])
+        continue;
+      if (id == target)
+        break;
+      const std::uint32_t parity = id >= n ? 1 : 0;
+      const SimplexIndex v = region[id - parity * n];
+      for (const auto& entry : graph_.neighbors (v)) {
+        const SimplexIndex w = entry.neighbor;
+        if (stamp_[w] != generation_ || !admissible (polygon, v, w))
+          continue;
+        const std::uint32_t flip = crossesRay (projected_[v], projected_[w], p) ? 1 : 0;
+        const auto next = static_cast<std::uint32_t> (local_[w] + (parity ^ flip) * n);
+        const double through = d + complex_.edges()[entry.edge].value;
+        if (through < distance[next]) {
+          distance[next] = through;
+          previous[next] = id;
+          queue.push ({through, next});
+        }
+      }
+    }
+    std::vector<SimplexIndex> cycle;
+    if (previous[target] == std::numeric_limits<std::uint32_t>::max())
+      return cycle;
+    for (std::uint32_t id = previous[target]; id != source; id = previous[id])
+      cycle.push_back (region[id >= n ? id - n : id]);
+    cycle.push_back (region[start]);
+    std::reverse (cycle.begin(), cycle.end());
+    return cycle;
+  }
+
+  const FilteredComplex& complex_;
+  const EdgeAdjacency& graph_;
+  const std::vector<Point3d>& positions_;
+  double min_cell_;
+  double min_clearance_;
+  std::uint32_t generation_ = 0;
+  std::vector<std::uint32_t> stamp_;
+  std::vector<std::uint32_t> position_in_cycle_; // 1-based, 0: not on the cycle
+  std::vector<Eigen::Vector2d> projected_;
+  std::vector<std::uint32_t> local_; // a region vertex's index in the region
+  std::uint32_t cycle_length_ = 0;
+};
+
+} // namespace
+
+std::vector<SimplexIndex>
+essentialEdges (const PersistenceResult& result)
+{
+  std::vector<SimplexIndex> essential;
+  for (std::size_t e = 0; e < result.edge_positive.size(); ++e)
+    if (result.edge_positive[e] && result.edge_killer[e] == INVALID_SIMPLEX)
+      essential.push_back (static_cast<SimplexIndex> (e));
+  return essential;
+}
+
+std::vector<MinimalCycle>
+minimalCycles (const FilteredComplex& complex,
+               const PersistenceResult& result,
+               const std::vector<Point3d>& positions,
+               double min_clearance,
+               unsigned int threads)
+{
+  const std::vector<SimplexIndex> essential = essentialEdges (result);
+  std::vector<std::vector<MinimalCycle>> per_class (essential.size());
+  const auto& edges = complex.edges();
+  const RootedForest forest (
+      buildEdgeAdjacency (complex.numVertices(), edges, [&] (SimplexIndex e) {
+        return !result.edge_positive[e];
+      }));
+  const EdgeAdjacency graph = buildEdgeAdjacency (complex.numVertices(), edges);
+  double radius = 0.0;
+  for (const FilteredEdge& edge : edges)
+    radius = std::max (radius, edge.value);
+  const auto count = static_cast<std::int64_t> (essential.size());
+#pragma omp parallel num_threads(resolveThreads(threads))
+  {
+    RimFinder finder (complex, graph, positions, radius / 8.0, min_clearance);
+#pragma omp for schedule(dynamic, 1)
+    for (std::int64_t i = 0; i < count; ++i) {
+      const SimplexIndex e = essential[i];
+      per_class[i] = finder.rims (forest.path (edges[e].source, edges[e].target), e);
+    }
+  }
+  std::vector<MinimalCycle> cycles;
+  for (auto& rims : per_class)
+    for (MinimalCycle& rim : rims)
+      cycles.push_back (std::move (rim));
+  return cycles;
+}
+
+} // namespace tda
+} // namespace pcl

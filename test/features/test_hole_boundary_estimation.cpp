@@ -1,0 +1,301 @@
+/** HoleBoundaryEstimation on generated surfaces with round holes (ground truth from
+ * pcl_tda_generators): holes found and nothing else (no handle, tube end or outer
+ * border), rims and flags against the labels, independence of order and threads,
+ * and bad input. */
+#include <pcl/common/io.h>
+#include <pcl/tda/features/hole_boundary_estimation.h>
+#include <pcl/tda/generators/hole_surfaces.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <random>
+#include <vector>
+
+namespace {
+
+using Estimation = pcl::tda::HoleBoundaryEstimation<pcl::PointXYZ, pcl::Boundary>;
+using pcl::tda::HoleSurface;
+using pcl::tda::HoleSurfaceKind;
+
+pcl::PointCloud<pcl::PointXYZ>::Ptr
+positionsOf (const HoleSurface& surface)
+{
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  pcl::copyPointCloud (*surface.cloud, *cloud);
+  return cloud;
+}
+
+HoleSurface
+generate (HoleSurfaceKind kind, std::uint64_t seed, float noise = 0.0f)
+{
+  pcl::tda::HoleSurfaceParameters parameters;
+  parameters.kind = kind;
+  parameters.seed = seed;
+  parameters.noise_sigma = noise;
+  return pcl::tda::generateHoleSurface (parameters);
+}
+
+/** The true hole a found rim goes around: the one whose centre is nearest the rim's
+ * centroid, when within half its radius; -1 otherwise. */
+int
+matchedHole (const pcl::tda::HoleRim& rim, const HoleSurface& surface)
+{
+  int best = -1;
+  float best_distance = std::numeric_limits<float>::infinity();
+  for (std::size_t h = 0; h < surface.holes.size(); ++h) {
+    const float d = (rim.centroid - surface.holes[h].center).norm();
+    if (d < 0.5f * surface.holes[h].radius && d < best_distance) {
+      best = static_cast<int> (h);
+      best_distance = d;
+    }
+  }
+  return best;
+}
+
+struct HoleCounts {
+  std::size_t matched = 0;   // found rims around distinct true holes
+  std::size_t unmatched = 0; // found rims around no true hole, or a second time
+};
+
+HoleCounts
+countHoles (const std::vector<pcl::tda::HoleRim>& rims, const HoleSurface& surface)
+{
+  HoleCounts counts;
+  std::vector<bool> seen (surface.holes.size(), false);
+  for (const auto& rim : rims) {
+    const int h = matchedHole (rim, surface);
+    if (h < 0 || seen[h]) {
+      ++counts.unmatched;
+      continue;
+    }
+    seen[h] = true;
+    ++counts.matched;
+  }
+  return counts;
+}
+
+TEST (HoleBoundaryEstimation, OpenPatchesEveryHoleAndNothingElse)
+{
+  for (const HoleSurfaceKind kind :
+       {HoleSurfaceKind::PLANE, HoleSurfaceKind::HEIGHT_FIELD})
+    for (const float noise : {0.0f, 0.25f})
+      for (const std::uint64_t seed : {1u, 2u}) {
+        SCOPED_TRACE (::testing::Message() << "kind " << static_cast<int> (kind)
+                                           << " noise " << noise << " seed " << seed);
+        const HoleSurface surface = generate (kind, seed, noise);
+        Estimation estimation;
+        estimation.setInputCloud (positionsOf (surface));
+        pcl::PointCloud<pcl::Boundary> flags;
+        estimation.compute (flags);
+        ASSERT_EQ (flags.size(), surface.cloud->size());
+        const HoleCounts counts = countHoles (estimation.getHoles(), surface);
+        EXPECT_EQ (counts.matched, surface.holes.size());
+        EXPECT_EQ (counts.unmatched, 0u);
+      }
+}
+
+TEST (HoleBoundaryEstimation, TubesAndClosedSurfacesNoHandleReported)
+{
+  // On a closed surface with k holes, k - 1 of them are independent 1-classes; the
+  // waist and the open ends of a tube and the loops of a torus stand across the
+  // surface and must not be reported. (On the torus, holes whose classes also go
+  // around a handle are not found yet: only precision is checked there.)
+  for (const HoleSurfaceKind kind :
+       {HoleSurfaceKind::CYLINDER, HoleSurfaceKind::SPHERE, HoleSurfaceKind::TORUS})
+    for (const std::uint64_t seed : {1u, 2u, 3u}) {
+      SCOPED_TRACE (::testing::Message()
+                    << "kind " << static_cast<int> (kind) << " seed " << seed);
+      const HoleSurface surface = generate (kind, seed);
+      Estimation estimation;
+      estimation.setInputCloud (positionsOf (surface));
+      pcl::PointCloud<pcl::Boundary> flags;
+      estimation.compute (flags);
+      const HoleCounts counts = countHoles (estimation.getHoles(), surface);
+      if (kind != HoleSurfaceKind::TORUS) {
+        EXPECT_GE (counts.matched + 1, surface.holes.size());
+      }
+      EXPECT_EQ (counts.unmatched, 0u);
+    }
+}
+
+TEST (HoleBoundaryEstimation, FlagsTheRimBandOfTheLabels)
+{
+  for (const std::uint64_t seed : {4u, 5u}) {
+    const HoleSurface surface = generate (HoleSurfaceKind::PLANE, seed);
+    Estimation estimation;
+    estimation.setInputCloud (positionsOf (surface));
+    pcl::PointCloud<pcl::Boundary> flags;
+    estimation.compute (flags);
+    std::size_t true_positive = 0, false_positive = 0, false_negative = 0;
+    for (std::size_t i = 0; i < flags.size(); ++i) {
+      const std::uint32_t label = (*surface.cloud)[i].label;
+      if (label == pcl::tda::OUTER_BORDER_LABEL)
+        continue; // not scored: a hole detector does not flag the outer border
+      const bool rim = label != pcl::tda::SURFACE_LABEL;
+      const bool flagged = flags[i].boundary_point != 0;
+      true_positive += rim && flagged;
+      false_positive += !rim && flagged;
+      false_negative += rim && !flagged;
+    }
+    const double f1 =
+        2.0 * true_positive / (2.0 * true_positive + false_positive + false_negative);
+    EXPECT_GT (f1, 0.8) << "seed " << seed << ": tp " << true_positive << " fp "
+                        << false_positive << " fn " << false_negative;
+    // The rims run along the holes' edges: nearly all their points are labelled
+    // rim points (a shortest rim cuts corners, a little outside the band at times).
+    std::size_t on_band = 0, rim_points = 0;
+    for (const auto& hole : estimation.getHoles())
+      for (const auto index : hole.rim) {
+        on_band += (*surface.cloud)[index].label != pcl::tda::SURFACE_LABEL;
+        ++rim_points;
+      }
+    EXPECT_GT (on_band, rim_points * 4 / 5);
+  }
+}
+
+TEST (HoleBoundaryEstimation, IndependentOfInputOrderAndThreads)
+{
+  const HoleSurface surface = generate (HoleSurfaceKind::HEIGHT_FIELD, 9, 0.1f);
+  const auto cloud = positionsOf (surface);
+  Estimation reference;
+  reference.setInputCloud (cloud);
+  reference.setNumberOfThreads (1);
+  pcl::PointCloud<pcl::Boundary> expected;
+  reference.compute (expected);
+  ASSERT_FALSE (reference.getHoles().empty());
+
+  std::vector<std::size_t> order (cloud->size());
+  std::iota (order.begin(), order.end(), 0);
+  std::mt19937 rng (3);
+  std::shuffle (order.begin(), order.end(), rng);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr shuffled (new pcl::PointCloud<pcl::PointXYZ>);
+  for (const std::size_t i : order)
+    shuffled->push_back ((*cloud)[i]);
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    Estimation estimation;
+    estimation.setInputCloud (shuffled);
+    estimation.setNumberOfThreads (threads);
+    pcl::PointCloud<pcl::Boundary> flags;
+    estimation.compute (flags);
+    ASSERT_EQ (flags.size(), expected.size());
+    for (std::size_t k = 0; k < order.size(); ++k)
+      ASSERT_EQ (flags[k].boundary_point, expected[order[k]].boundary_point);
+    ASSERT_EQ (estimation.getHoles().size(), reference.getHoles().size());
+    for (std::size_t h = 0; h < reference.getHoles().size(); ++h) {
+      std::vector<std::size_t> want, got;
+      for (const auto v : reference.getHoles()[h].rim)
+        want.push_back (v);
+      for (const auto v : estimation.getHoles()[h].rim)
+        got.push_back (order[v]);
+      std::sort (want.begin(), want.end());
+      std::sort (got.begin(), got.end());
+      EXPECT_EQ (got, want);
+    }
+  }
+}
+
+TEST (HoleBoundaryEstimation, IndicesSubsetAndNonFinitePoints)
+{
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 2);
+  auto cloud = positionsOf (surface);
+  const std::size_t size = cloud->size();
+  cloud->push_back (
+      pcl::PointXYZ (std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f));
+  pcl::IndicesPtr indices (new pcl::Indices);
+  for (std::size_t i = 0; i <= size; i += 1)
+    indices->push_back (static_cast<int> (i));
+  Estimation estimation;
+  estimation.setInputCloud (cloud);
+  estimation.setIndices (indices);
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  ASSERT_EQ (flags.size(), indices->size());
+  EXPECT_EQ (flags.back().boundary_point, 0); // the NaN point
+  EXPECT_EQ (countHoles (estimation.getHoles(), surface).matched, surface.holes.size());
+}
+
+TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
+{
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 1);
+  const auto cloud = positionsOf (surface);
+  const auto fails = [] (Estimation& estimation) {
+    pcl::PointCloud<pcl::Boundary> flags;
+    flags.resize (3);
+    estimation.compute (flags);
+    return flags.empty() && estimation.getHoles().empty();
+  };
+  {
+    Estimation estimation; // no input
+    EXPECT_TRUE (fails (estimation));
+  }
+  {
+    Estimation estimation;
+    estimation.setInputCloud (pcl::PointCloud<pcl::PointXYZ>::Ptr (
+        new pcl::PointCloud<pcl::PointXYZ>)); // empty
+    EXPECT_TRUE (fails (estimation));
+  }
+  {
+    pcl::PointCloud<pcl::PointXYZ>::Ptr nan_cloud (new pcl::PointCloud<pcl::PointXYZ>);
+    nan_cloud->resize (10,
+                       pcl::PointXYZ (std::numeric_limits<float>::quiet_NaN(), 0, 0));
+    Estimation estimation;
+    estimation.setInputCloud (nan_cloud);
+    EXPECT_TRUE (fails (estimation));
+  }
+  for (const double radius : {-1.0,
+                              std::numeric_limits<double>::infinity(),
+                              std::numeric_limits<double>::quiet_NaN()}) {
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    estimation.setRadius (radius);
+    EXPECT_TRUE (fails (estimation)) << radius;
+  }
+  {
+    Estimation estimation; // no triangle at a tenth of the spacing
+    estimation.setInputCloud (cloud);
+    estimation.setRadius (surface.spacing * 0.1);
+    EXPECT_TRUE (fails (estimation));
+  }
+  {
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    estimation.setMaxTiltAngle (100.0);
+    EXPECT_TRUE (fails (estimation));
+  }
+  {
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    estimation.setRadius (0.01);
+    estimation.setRimBandWidth (0.02); // wider than the radius
+    EXPECT_TRUE (fails (estimation));
+  }
+  {
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    estimation.setMemoryLimit (1000); // the complex does not fit
+    EXPECT_TRUE (fails (estimation));
+  }
+}
+
+TEST (HoleBoundaryEstimation, MaxCycleLengthDropsLongRims)
+{
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 3);
+  Estimation estimation;
+  estimation.setInputCloud (positionsOf (surface));
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  ASSERT_EQ (estimation.getHoles().size(), 3u);
+  const std::size_t shortest = estimation.getHoles().back().rim.size();
+  estimation.setMaxCycleLength (shortest);
+  estimation.compute (flags);
+  ASSERT_GE (estimation.getHoles().size(), 1u);
+  for (const auto& hole : estimation.getHoles())
+    EXPECT_LE (hole.rim.size(), shortest);
+}
+
+} // namespace
