@@ -120,16 +120,17 @@ holeRims (const std::vector<MinimalCycle>& cycles,
   return holes;
 }
 
-std::vector<std::uint8_t>
+std::vector<std::uint32_t>
 rimBand (const std::vector<HoleRim>& holes,
          const std::vector<Point3d>& positions,
          const EdgeAdjacency& adjacency,
          double band_width,
          double spacing)
 {
-  std::vector<std::uint8_t> band (positions.size(), 0);
+  std::vector<std::uint32_t> band (positions.size(), 0);
   std::vector<std::uint8_t> seen (positions.size(), 0);
-  for (const HoleRim& hole : holes) {
+  for (std::size_t h = holes.size(); h-- > 0;) { // earlier holes win shared points
+    const HoleRim& hole = holes[h];
     const ProjectedPolygon polygon (positions, hole.rim);
     // The points within two edges of the rim: every point between the rim and the
     // hole, and the surface beside the rim.
@@ -175,7 +176,7 @@ rimBand (const std::vector<HoleRim>& holes,
       int ix, iy;
       if (to_empty.cellOf (projected[i], ix, iy) &&
           to_empty.distance (ix, iy) <= band_width + spacing / 2.0)
-        band[near[i]] = 1;
+        band[near[i]] = static_cast<std::uint32_t> (h + 1);
     }
   }
   return band;

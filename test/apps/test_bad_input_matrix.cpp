@@ -138,6 +138,7 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
     expectRefusal ("barcode", "bad.pcd out.csv -radius 0.1", message);
     expectRefusal ("segment", "bad.pcd out.pcd -radius 0.1 -plane 0", message);
     expectRefusal ("regions", "bad.pcd out.pcd -radius 0.1", message);
+    expectRefusal ("holes", "bad.pcd out.pcd -radius 0.1", message);
   }
   const std::vector<std::pair<std::string, std::string>> inputs{
       {"x.pcd", "x.pcd is a directory, not a PCD file"},
@@ -148,6 +149,7 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
     expectRefusal ("barcode", input + " out.csv -radius 0.1", message);
     expectRefusal ("segment", input + " out.pcd -radius 0.1", message);
     expectRefusal ("regions", input + " out.pcd", message);
+    expectRefusal ("holes", input + " out.pcd", message);
   }
   expectRefusal (
       "regions", "plain.pcd out.pcd", "plain.pcd has no colour (no rgb or rgba field)");
@@ -257,6 +259,25 @@ TEST_F (BadInputMatrix, BadOptions)
   for (const auto& [arguments, message] : regions_cases)
     expectRefusal ("regions", arguments, message);
 
+  const std::string holes = "plain.pcd out.pcd ";
+  const std::vector<std::pair<std::string, std::string>> holes_cases{
+      {holes + "-radius 0", "Option -radius needs a number > 0 and <= 1e+09, not '0'."},
+      {holes + "-radius nan",
+       "Option -radius needs a number > 0 and <= 1e+09, not 'nan'."},
+      {holes + "-max-cycle 2",
+       "Option -max-cycle needs an integer from 3 to 2147483647, not '2'."},
+      {holes + "-fill f.pcd -fill-mode cube",
+       "-fill-mode must be surface or centroid (got 'cube')."},
+      {holes + "-fill-mode centroid", "-fill-mode has no use without -fill."},
+      {holes + "-fill f.csv", "-fill needs a .pcd file (got 'f.csv')."},
+      {holes + "-memory -1", "Option -memory needs a number >= 0"},
+      {holes + "-png", "Option -png needs a value."},
+      {holes + "-foo", "Unknown option -foo"},
+      {"plain.pcd out.csv", "The output out.csv must be a .pcd file."},
+  };
+  for (const auto& [arguments, message] : holes_cases)
+    expectRefusal ("holes", arguments, message);
+
   const std::vector<std::pair<std::string, std::string>> generate_cases{
       {"cube out.pcd", "Unknown kind 'cube'"},
       {"circle out.csv", "The output out.csv must be a .pcd file."},
@@ -342,6 +363,21 @@ TEST_F (BadInputMatrix, BadOutputs)
   };
   for (const auto& [arguments, message] : regions_cases)
     expectRefusal ("regions", arguments, message);
+  const std::vector<std::pair<std::string, std::string>> holes_cases{
+      {"plain.pcd nodir/out.pcd",
+       "cannot write nodir/out.pcd: the folder nodir does not exist"},
+      {"plain.pcd out.pcd -fill nodir/f.pcd",
+       "cannot write nodir/f.pcd: the folder nodir does not exist"},
+      {"plain.pcd out.pcd -csv old.svg -svg old.svg",
+       "-csv and -svg name the same file old.svg"},
+      {"plain.pcd out.pcd -fill plain.pcd",
+       "refusing to overwrite the input file plain.pcd (-fill)"},
+      {"plain.pcd plain.pcd",
+       "refusing to overwrite the input file plain.pcd (output)"},
+      {"plain.pcd out.pcd -memory 0.000001", "Hole detection failed (see above)"},
+  };
+  for (const auto& [arguments, message] : holes_cases)
+    expectRefusal ("holes", arguments, message);
   expectRefusal ("generate", "circle x.pcd", "cannot write x.pcd: it is a directory");
   expectRefusal ("generate",
                  "holes out.pcd -remove 0.1 -removed x.pcd",
@@ -363,6 +399,8 @@ TEST_F (BadInputMatrix, HelpPrintsOnlyTheHelp)
         std::string ("segment good.pcd out.pcd -foo -h"),
         std::string ("regions -h"),
         std::string ("regions colour.pcd out.pcd -color 0 -h"),
+        std::string ("holes -h"),
+        std::string ("holes plain.pcd out.pcd -max-cycle 1 -h"),
         std::string ("generate --help"),
         std::string ("generate circle out.pcd -h")}) {
     const FolderState before = stateOf (folder_);

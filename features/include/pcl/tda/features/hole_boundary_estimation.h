@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -201,6 +202,15 @@ public:
     return holes_;
   }
 
+  /** \brief Per input point (all of them, indexed or not), the number of the hole
+   * (1, 2, ... in the order of getHoles()) whose rim band it is in, or 0: the
+   * boundary flags of compute(), hole by hole. */
+  const std::vector<std::uint32_t>&
+  getRimBandLabels () const
+  {
+    return rim_band_labels_;
+  }
+
   /** \brief The persistence diagram (dimensions 0 and 1) of the complex of the last
    * compute(); the holes are among its essential 1-classes. */
   const PersistenceDiagram&
@@ -246,7 +256,7 @@ protected:
 private:
   /** \brief Finds the holes of the input; false, with a PCL_ERROR, on failure. */
   bool
-  findHoles (std::vector<std::uint8_t>& band);
+  findHoles ();
 
   double radius_ = 0.0;
   std::size_t max_cycle_length_ = 0;
@@ -259,6 +269,7 @@ private:
 
   FilteredComplex complex_;
   std::vector<HoleRim> holes_;
+  std::vector<std::uint32_t> rim_band_labels_;
   PersistenceDiagram diagram_;
   double used_radius_ = 0.0;
   double used_band_width_ = 0.0;

@@ -69,9 +69,10 @@ holeRims (const std::vector<MinimalCycle>& cycles,
           std::size_t max_cycle_length,
           double min_clearance);
 
-/** \brief The rim band: per vertex, 1 when it lies within \a band_width of the edge
- * of a hole of \a holes, else 0 (the band pcl::BoundaryEstimation flags along a
- * border, and the band the generated ground truth labels).
+/** \brief The rim band: per vertex, the number (1, 2, ...) of the hole of \a holes
+ * whose edge it lies within \a band_width of (the first such hole), else 0. This is
+ * the band pcl::BoundaryEstimation flags along a border, and the band the generated
+ * ground truth labels.
  *
  * A minimal rim is the shortest cycle around the hole; it cuts corners, and may
  * pass a little outside points at the hole's very edge. So the band is measured
@@ -86,7 +87,7 @@ holeRims (const std::vector<MinimalCycle>& cycles,
  * \param[in] band_width the band's width
  * \param[in] spacing the sampling spacing of the surface (square root of the area
  * per point) */
-std::vector<std::uint8_t>
+std::vector<std::uint32_t>
 rimBand (const std::vector<HoleRim>& holes,
          const std::vector<Point3d>& positions,
          const EdgeAdjacency& adjacency,

@@ -49,7 +49,7 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
 
 template <typename PointInT, typename PointOutT>
 bool
-HoleBoundaryEstimation<PointInT, PointOutT>::findHoles (std::vector<std::uint8_t>& band)
+HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
 {
   // In a canonical order, so that the sample the spacing is measured on, and so the
   // radius, do not depend on the input order.
@@ -124,11 +124,11 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles (std::vector<std::uint8_t
                 max_tilt_degrees_,
                 max_cycle_length_,
                 min_clearance);
-  const std::vector<std::uint8_t> vertex_band =
+  const std::vector<std::uint32_t> vertex_band =
       rimBand (holes_, positions, adjacency, used_band_width_, spacing);
-  band.assign (input_->size(), 0);
+  rim_band_labels_.assign (input_->size(), 0);
   for (std::size_t v = 0; v < positions.size(); ++v)
-    band[point_indices[v]] = vertex_band[v];
+    rim_band_labels_[point_indices[v]] = vertex_band[v];
   for (HoleRim& hole : holes_)
     for (SimplexIndex& v : hole.rim)
       v = static_cast<SimplexIndex> (point_indices[v]);
@@ -141,16 +141,17 @@ HoleBoundaryEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& outp
 {
   holes_.clear();
   diagram_.clear();
+  rim_band_labels_.clear();
   complex_ = FilteredComplex();
-  std::vector<std::uint8_t> band;
-  if (!findHoles (band)) {
+  if (!findHoles()) {
     holes_.clear();
+    rim_band_labels_.clear();
     output.width = output.height = 0;
     output.clear();
     return;
   }
   for (std::size_t i = 0; i < indices_->size(); ++i)
-    output[i].boundary_point = band[(*indices_)[i]];
+    output[i].boundary_point = rim_band_labels_[(*indices_)[i]] != 0 ? 1 : 0;
 }
 
 } // namespace tda

@@ -1,0 +1,289 @@
+// pcl_tda_holes: the holes of a scanned surface from its minimal 1-cycles (thesis
+// Ch. 5): every point labelled by the hole whose rim band it is in, the holes as a
+// table, the cloud with its holes filled, the H1 barcode and a picture.
+
+#include <pcl/common/io.h>
+#include <pcl/console/print.h>
+#include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/apps/tool_console.h>
+#include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/apps/tool_outputs.h>
+#include <pcl/tda/common/error_message.h>
+#include <pcl/tda/common/persistence_plots.h>
+#include <pcl/tda/common/progress_bar.h>
+#include <pcl/tda/features/hole_boundary_estimation.h>
+#include <pcl/tda/surface/hole_filling.h>
+#include <pcl/exceptions.h>
+#include <pcl/point_types.h>
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace pcl::console;
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+using Estimation = pcl::tda::HoleBoundaryEstimation<pcl::PointXYZ, pcl::Boundary>;
+
+namespace {
+
+struct Options {
+  std::string input, output, filled, fill_mode = "surface", csv, barcode_svg,
+                                     picture_png;
+  double radius = 0.0;
+  long max_cycle = 0;
+  double memory_mib = 0.0;
+};
+
+void
+printHelp (const char* program)
+{
+  print_info ("Syntax is: %s input.pcd output.pcd <options>\n", program);
+  print_info ("  Finds the holes of a scanned surface: writes every input point, in "
+              "input order,\n  with the number of the hole whose rim band it is in "
+              "as label (0: none; 1, 2,\n  ... by decreasing rim length).\n");
+  print_info ("  where options are:\n");
+  print_info ("    -radius R   = radius of the Vietoris-Rips complex (default: %g "
+              "times the\n                  surface spacing, from the distance to "
+              "the %zu-th nearest point)\n",
+              Estimation::AUTO_RADIUS_PER_SPACING,
+              pcl::tda::SURFACE_SPACING_NEIGHBORS);
+  print_info ("    -max-cycle N = report only rims of at most N points (default: no "
+              "limit)\n");
+  print_info ("    -fill F.pcd = also write the cloud with its holes filled: the "
+              "input points,\n                  then the new ones\n");
+  print_info ("    -fill-mode M = surface (new points on a surface fitted around "
+              "the hole, spaced\n                  like the cloud; the default) or "
+              "centroid (one point per hole)\n");
+  print_info ("    -csv F.csv  = also write one row per hole: its size, perimeter, "
+              "area, centre,\n                  normal, birth and rim points\n");
+  print_info ("    -svg F.svg  = also draw the H1 barcode of the complex\n");
+  print_info ("    -png F.png  = also draw the cloud with its rim bands in colour "
+              "(and, with\n                  -fill, the new points in red)\n");
+  print_info ("    -memory M   = refuse complexes over M MiB (default: half of the "
+              "memory)\n");
+  print_info ("  Outputs are written only when the whole run succeeds.\n");
+}
+
+/** Reads the command line into \a options.
+ * \throws pcl::BadArgumentException naming the option at fault */
+void
+parseOptions (int argc, char** argv, Options& options)
+{
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addNumber (
+      "-radius", options.radius, pcl::tda::NumberRange::above (0.0, 1e9));
+  command_line.addInteger (
+      "-max-cycle", options.max_cycle, 3, std::numeric_limits<int>::max());
+  command_line.addText ("-fill", options.filled);
+  command_line.addText ("-fill-mode", options.fill_mode);
+  command_line.addText ("-csv", options.csv);
+  command_line.addText ("-svg", options.barcode_svg);
+  command_line.addText ("-png", options.picture_png);
+  command_line.addNumber (
+      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+  const std::vector<std::string> files = command_line.parse (argc, argv);
+  pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".pcd"}});
+  options.input = files[0];
+  options.output = files[1];
+  if (options.fill_mode != "surface" && options.fill_mode != "centroid")
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "-fill-mode must be surface or centroid (got '"
+                             << options.fill_mode << "').");
+  if (command_line.given ("-fill-mode") && options.filled.empty())
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "-fill-mode has no use without -fill.");
+  if (!options.filled.empty() &&
+      (options.filled.size() < 4 ||
+       options.filled.compare (options.filled.size() - 4, 4, ".pcd") != 0))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "-fill needs a .pcd file (got '" << options.filled << "').");
+}
+
+/** Writes the holes as CSV to \a path: one row per hole, the rim's input indices
+ * space-separated in the last column.
+ * \throws pcl::IOException when the file cannot be written */
+void
+saveHolesCsv (const std::string& path,
+              const std::vector<pcl::tda::HoleRim>& holes,
+              double radius)
+{
+  std::ostringstream text;
+  text.precision (9);
+  text << "id,rim_points,perimeter,area,clearance,centroid_x,centroid_y,centroid_z,"
+          "normal_x,normal_y,normal_z,tilt_degrees,birth,alive_at,rim\n";
+  for (std::size_t k = 0; k < holes.size(); ++k) {
+    const pcl::tda::HoleRim& hole = holes[k];
+    text << k + 1 << ',' << hole.rim.size() << ',' << hole.perimeter << ',' << hole.area
+         << ',' << hole.clearance << ',' << hole.centroid.x() << ','
+         << hole.centroid.y() << ',' << hole.centroid.z() << ',' << hole.normal.x()
+         << ',' << hole.normal.y() << ',' << hole.normal.z() << ',' << hole.tilt_degrees
+         << ',' << hole.birth << ',' << radius << ',';
+    for (std::size_t i = 0; i < hole.rim.size(); ++i)
+      text << (i > 0 ? " " : "") << hole.rim[i];
+    text << '\n';
+  }
+  std::ofstream file (path);
+  file << text.str();
+  if (!file.flush())
+    PCL_THROW_EXCEPTION (pcl::IOException, "Cannot write " << path << ".");
+}
+
+/** The H1 intervals of a diagram. */
+pcl::tda::PersistenceDiagram
+h1Intervals (const pcl::tda::PersistenceDiagram& diagram)
+{
+  pcl::tda::PersistenceDiagram h1;
+  for (const auto& interval : diagram)
+    if (interval.dimension == 1)
+      h1.push_back (interval);
+  return h1;
+}
+
+int
+run (const Options& options, pcl::tda::ToolConsole& console)
+{
+  pcl::tda::ToolOutputs outputs (options.input,
+                                 {{"output", options.output},
+                                  {"-fill", options.filled},
+                                  {"-csv", options.csv},
+                                  {"-svg", options.barcode_svg},
+                                  {"-png", options.picture_png}});
+  pcl::PCLPointCloud2 blob;
+  console.beginStep ("Loading", options.input);
+  try {
+    pcl::tda::loadPointCloudFile (options.input, blob);
+  }
+  catch (const pcl::PCLException& failure) {
+    console.error ("Cannot read the PCD file: " + pcl::tda::errorMessage (failure));
+    return 1;
+  }
+  Cloud::Ptr cloud (new Cloud);
+  if (!blob.data.empty())
+    pcl::fromPCLPointCloud2 (blob, *cloud);
+  console.endStep (std::to_string (cloud->size()) + " points");
+
+  Estimation estimation;
+  estimation.setInputCloud (cloud);
+  estimation.setRadius (options.radius);
+  estimation.setMaxCycleLength (static_cast<std::size_t> (options.max_cycle));
+  if (options.memory_mib > 0.0)
+    estimation.setMemoryLimit (
+        static_cast<std::size_t> (options.memory_mib * 1048576.0));
+  console.beginStep ("Finding holes");
+  pcl::PointCloud<pcl::Boundary> flags;
+  {
+    pcl::tda::ProgressBar bar ("  complex");
+    estimation.setProgressCallback (
+        [&bar] (std::size_t done, std::size_t total) { bar.update (done, total); });
+    estimation.compute (flags);
+  }
+  if (flags.empty() && !cloud->empty()) {
+    console.error ("Hole detection failed (see above). For a complex over the memory "
+                   "limit: set a larger one with -memory M (MiB), or a smaller "
+                   "-radius.");
+    return 1;
+  }
+  const std::vector<pcl::tda::HoleRim>& holes = estimation.getHoles();
+  std::ostringstream found;
+  found << holes.size() << " holes, radius " << estimation.getUsedRadius()
+        << (options.radius > 0.0 ? " (given)" : " (from the spacing)") << ", "
+        << estimation.getComplex().numEdges() << " edges, "
+        << estimation.getComplex().numTriangles() << " triangles";
+  console.endStep (found.str());
+  constexpr std::size_t MAX_LINES = 30;
+  for (std::size_t k = 0; k < holes.size() && k < MAX_LINES; ++k)
+    print_info ("  hole %zu: rim of %zu points, perimeter %g, area %g, centre (%g, %g, "
+                "%g)\n",
+                k + 1,
+                holes[k].rim.size(),
+                holes[k].perimeter,
+                holes[k].area,
+                holes[k].centroid.x(),
+                holes[k].centroid.y(),
+                holes[k].centroid.z());
+  if (holes.size() > MAX_LINES)
+    print_info ("  ... and %zu more holes\n", holes.size() - MAX_LINES);
+
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  pcl::copyPointCloud (*cloud, labelled);
+  const std::vector<std::uint32_t>& labels = estimation.getRimBandLabels();
+  for (std::size_t i = 0; i < labelled.size(); ++i)
+    labelled[i].label = labels.empty() ? 0 : labels[i];
+
+  Cloud filled;
+  if (!options.filled.empty()) {
+    console.beginStep ("Filling", options.fill_mode);
+    pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+    filler.setInputCloud (cloud);
+    filler.setHoles (holes);
+    filler.setMode (options.fill_mode == "centroid"
+                        ? pcl::tda::HoleFilling<pcl::PointXYZ>::Mode::CENTROID
+                        : pcl::tda::HoleFilling<pcl::PointXYZ>::Mode::SURFACE);
+    if (!filler.reconstruct (filled)) {
+      console.error ("Hole filling failed (see above).");
+      return 1;
+    }
+    console.endStep (std::to_string (filled.size() - cloud->size()) + " new points");
+  }
+
+  console.beginStep ("Saving", options.output);
+  try {
+    pcl::tda::savePointCloudFile (outputs.temporary (options.output), labelled);
+    if (!options.filled.empty())
+      pcl::tda::savePointCloudFile (outputs.temporary (options.filled), filled);
+    if (!options.csv.empty())
+      saveHolesCsv (outputs.temporary (options.csv), holes, estimation.getUsedRadius());
+    if (!options.barcode_svg.empty()) {
+      pcl::tda::PlotOptions plot;
+      std::ostringstream title;
+      title << options.input << ": H1 up to radius " << estimation.getUsedRadius()
+            << ", " << holes.size() << " holes";
+      plot.title = title.str();
+      plot.max_value = estimation.getUsedRadius();
+      pcl::tda::saveBarcodeSVG (outputs.temporary (options.barcode_svg),
+                                h1Intervals (estimation.getPersistenceDiagram()),
+                                plot);
+    }
+    if (!options.picture_png.empty()) {
+      // Left: rim bands in their holes' colours. Right: the surface grey, the rim
+      // bands black and the new points red.
+      pcl::PointCloud<pcl::PointXYZRGBL> picture;
+      pcl::copyPointCloud (labelled, picture);
+      for (auto& point : picture) {
+        const std::uint8_t shade = point.label == 0 ? 190 : 20;
+        point.r = point.g = point.b = shade;
+      }
+      for (std::size_t i = cloud->size(); i < filled.size(); ++i) {
+        pcl::PointXYZRGBL point;
+        point.getVector3fMap() = filled[i].getVector3fMap();
+        point.r = 230;
+        point.g = point.b = 0;
+        point.label = 0;
+        picture.push_back (point);
+      }
+      pcl::tda::saveCloudPicture (
+          outputs.temporary (options.picture_png),
+          picture,
+          {pcl::tda::PictureColors::LABELS, pcl::tda::PictureColors::POINTS});
+    }
+    outputs.commit();
+  }
+  catch (const std::exception& error) {
+    console.error (pcl::tda::errorMessage (error));
+    return 1;
+  }
+  console.endStep (std::to_string (labelled.size()) + " labelled points");
+  return 0;
+}
+
+} // namespace
+
+int
+main (int argc, char** argv)
+{
+  return pcl::tda::runTool<Options> (
+      argc, argv, "Hole boundaries by minimal 1-cycles.", printHelp, parseOptions, run);
+}

@@ -1,0 +1,126 @@
+#pragma once
+
+#include <pcl/tda/features/hole_rims.h>
+#include <pcl/pcl_base.h>
+#include <pcl/point_cloud.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief Fills the holes that HoleBoundaryEstimation found: new points inside each
+ * rim, the input points kept unchanged and in order (thesis Sec 5.6).
+ *
+ * Two modes:
+ * - CENTROID, the thesis' filling: one point per hole, at the mean of its rim's
+ *   points. Good for small, convex holes.
+ * - SURFACE: new points on a surface fitted to the hole's surroundings, spaced like
+ *   the cloud, only inside the rim, so that large and non-convex holes are filled
+ *   too. The surroundings are the input points within three spacings of a rim
+ *   point; in the plane of the rim (ProjectedPolygon) they give a quadratic height
+ *   field h(u, v) = a + b u + c v + d u^2 + e u v + f v^2 by least squares. The new
+ *   points are the nodes of a square grid of one spacing in that plane that lie
+ *   inside the rim and at least 0.7 spacing from every surrounding point, lifted to
+ *   the height field.
+ *
+ * A new point copies the fields of the rim point nearest to it (colour, intensity,
+ * label, ...) and takes its own x, y, z.
+ *
+ * \code
+ * pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+ * filler.setInputCloud (cloud);
+ * filler.setHoles (estimation.getHoles ());
+ * pcl::PointCloud<pcl::PointXYZ> filled;
+ * filler.reconstruct (filled);   // cloud's points, then the new ones
+ * \endcode */
+template <typename PointT>
+class HoleFilling : public pcl::PCLBase<PointT> {
+public:
+  using Ptr = shared_ptr<HoleFilling<PointT>>;
+  using ConstPtr = shared_ptr<const HoleFilling<PointT>>;
+
+  /** \brief How holes are filled (see the class). */
+  enum class Mode { CENTROID, SURFACE };
+
+  /** \brief Sets the holes to fill: rims of input point indices, as
+   * HoleBoundaryEstimation::getHoles() gives them for the same cloud. */
+  void
+  setHoles (const std::vector<HoleRim>& holes)
+  {
+    holes_ = holes;
+  }
+
+  /** \brief Sets the mode (default SURFACE). */
+  void
+  setMode (Mode mode)
+  {
+    mode_ = mode;
+  }
+
+  Mode
+  getMode () const
+  {
+    return mode_;
+  }
+
+  /** \brief Sets the spacing of the new points; 0 (the default): the surface spacing
+   * of the input (surfaceSpacing()). */
+  void
+  setSpacing (double spacing)
+  {
+    spacing_ = spacing;
+  }
+
+  double
+  getSpacing () const
+  {
+    return spacing_;
+  }
+
+  /** \brief Writes the input points followed by the new points to \a output. On
+   * failure (no input, a rim index out of range, a bad spacing) prints a PCL_ERROR
+   * and leaves \a output empty.
+   * \return true on success */
+  bool
+  reconstruct (pcl::PointCloud<PointT>& output);
+
+  /** \brief The number of new points per hole of the last reconstruct(). */
+  const std::vector<std::size_t>&
+  getNewPointCounts () const
+  {
+    return new_point_counts_;
+  }
+
+  /** \brief The class name, as PCL's classes report it in their messages. */
+  const std::string&
+  getClassName () const
+  {
+    return class_name_;
+  }
+
+protected:
+  using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::initCompute;
+  using pcl::PCLBase<PointT>::deinitCompute;
+
+private:
+  /** \brief The new points of one hole, appended to \a output. */
+  void
+  fillHole (const HoleRim& hole, double spacing, pcl::PointCloud<PointT>& output) const;
+
+  std::vector<HoleRim> holes_;
+  Mode mode_ = Mode::SURFACE;
+  double spacing_ = 0.0;
+  std::vector<std::size_t> new_point_counts_;
+  std::string class_name_ = "HoleFilling";
+};
+
+} // namespace tda
+} // namespace pcl
+
+#ifdef PCL_NO_PRECOMPILE
+#include <pcl/tda/surface/impl/hole_filling.hpp>
+#endif

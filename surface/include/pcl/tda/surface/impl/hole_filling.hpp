@@ -1,0 +1,195 @@
+#pragma once
+
+#include <pcl/common/point_tests.h>
+#include <pcl/search/kdtree.h>
+#include <pcl/tda/common/point3d.h>
+#include <pcl/tda/features/distance_grid.h>
+#include <pcl/tda/features/hole_boundary_estimation.h>
+#include <pcl/tda/features/projected_polygon.h>
+#include <pcl/tda/surface/hole_filling.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace pcl {
+namespace tda {
+
+namespace hole_filling_detail {
+
+/** The input points within this many spacings of a rim point are the hole's
+ * surroundings, to which the surface is fitted. */
+constexpr double SURROUNDING_SPACINGS = 3.0;
+/** A new point keeps at least this many spacings from every surrounding point. */
+constexpr double MIN_GAP_SPACINGS = 0.7;
+
+} // namespace hole_filling_detail
+
+template <typename PointT>
+bool
+HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
+{
+  output.clear();
+  new_point_counts_.clear();
+  if (!initCompute()) {
+    PCL_ERROR ("[pcl::tda::%s::reconstruct] No input cloud: call setInputCloud().\n",
+               class_name_.c_str());
+    return false;
+  }
+  for (const HoleRim& hole : holes_)
+    for (const SimplexIndex index : hole.rim)
+      if (index >= input_->size() || !pcl::isXYZFinite ((*input_)[index])) {
+        PCL_ERROR ("[pcl::tda::%s::reconstruct] A rim point (index %u) is not a finite "
+                   "point of the input (%zu points): the holes come from another "
+                   "cloud.\n",
+                   class_name_.c_str(),
+                   index,
+                   input_->size());
+        deinitCompute();
+        return false;
+      }
+  double spacing = spacing_;
+  if (spacing == 0.0)
+    spacing = surfaceSpacing (*input_);
+  if (!(spacing > 0.0) || !std::isfinite (spacing)) {
+    PCL_ERROR ("[pcl::tda::%s::reconstruct] The spacing must be positive and finite "
+               "(got %g; 0 measures it, which needs %zu distinct finite points).\n",
+               class_name_.c_str(),
+               spacing,
+               SURFACE_SPACING_NEIGHBORS + 1);
+    deinitCompute();
+    return false;
+  }
+  output = *input_;
+  for (const HoleRim& hole : holes_) {
+    const std::size_t before = output.size();
+    if (hole.rim.size() >= 3)
+      fillHole (hole, spacing, output);
+    new_point_counts_.push_back (output.size() - before);
+  }
+  output.width = static_cast<std::uint32_t> (output.size());
+  output.height = 1;
+  output.is_dense = input_->is_dense;
+  deinitCompute();
+  return true;
+}
+
+template <typename PointT>
+void
+HoleFilling<PointT>::fillHole (const HoleRim& hole,
+                               double spacing,
+                               pcl::PointCloud<PointT>& output) const
+{
+  using namespace hole_filling_detail;
+  // The rim's points, numbered 0.. for the polygon.
+  std::vector<Point3d> rim_points;
+  std::vector<SimplexIndex> cycle;
+  for (const SimplexIndex index : hole.rim) {
+    const PointT& p = (*input_)[index];
+    cycle.push_back (static_cast<SimplexIndex> (rim_points.size()));
+    rim_points.push_back ({p.x, p.y, p.z});
+  }
+  const ProjectedPolygon polygon (rim_points, cycle);
+  const auto nearestRimPoint = [&] (const Eigen::Vector3d& position) {
+    std::size_t nearest = 0;
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < rim_points.size(); ++i) {
+      const double d =
+          (Eigen::Vector3d (rim_points[i][0], rim_points[i][1], rim_points[i][2]) -
+           position)
+              .squaredNorm();
+      if (d < best) {
+        best = d;
+        nearest = i;
+      }
+    }
+    return (*input_)[hole.rim[nearest]];
+  };
+  const auto append = [&] (const Eigen::Vector3d& position) {
+    PointT point = nearestRimPoint (position);
+    point.x = static_cast<float> (position.x());
+    point.y = static_cast<float> (position.y());
+    point.z = static_cast<float> (position.z());
+    output.push_back (point);
+  };
+  if (mode_ == Mode::CENTROID) {
+    append (polygon.centroid());
+    return;
+  }
+
+  // The surroundings, in the rim's frame: plane coordinates and height.
+  pcl::search::KdTree<PointT> tree;
+  tree.setInputCloud (input_);
+  std::vector<std::uint8_t> taken (input_->size(), 0);
+  std::vector<Eigen::Vector2d> around;
+  std::vector<double> heights;
+  pcl::Indices neighbors;
+  std::vector<float> squared_distances;
+  for (const SimplexIndex index : hole.rim) {
+    tree.radiusSearch (
+        (*input_)[index], SURROUNDING_SPACINGS * spacing, neighbors, squared_distances);
+    for (const auto n : neighbors) {
+      if (taken[n])
+        continue;
+      taken[n] = 1;
+      const PointT& p = (*input_)[n];
+      const Point3d q{p.x, p.y, p.z};
+      around.push_back (polygon.project (q));
+      heights.push_back ((Eigen::Vector3d (q[0], q[1], q[2]) - polygon.centroid())
+                             .dot (polygon.normal()));
+    }
+  }
+  // The quadratic height field (a plane when there are too few points for it).
+  const int terms = around.size() >= 12 ? 6 : 3;
+  Eigen::MatrixXd design (around.size(), terms);
+  Eigen::VectorXd values (around.size());
+  for (std::size_t i = 0; i < around.size(); ++i) {
+    const double u = around[i].x(), v = around[i].y();
+    design (i, 0) = 1.0;
+    design (i, 1) = u;
+    design (i, 2) = v;
+    if (terms == 6) {
+      design (i, 3) = u * u;
+      design (i, 4) = u * v;
+      design (i, 5) = v * v;
+    }
+    values (i) = heights[i];
+  }
+  const Eigen::VectorXd c = design.colPivHouseholderQr().solve (values);
+  const auto height = [&] (double u, double v) {
+    double h = c (0) + c (1) * u + c (2) * v;
+    if (terms == 6)
+      h += c (3) * u * u + c (4) * u * v + c (5) * v * v;
+    return h;
+  };
+
+  // The nodes of a grid of one spacing inside the rim, away from every point.
+  Eigen::Vector2d low = polygon.project (rim_points.front()), high = low;
+  for (const Point3d& p : rim_points) {
+    low = low.cwiseMin (polygon.project (p));
+    high = high.cwiseMax (polygon.project (p));
+  }
+  const DistanceGrid gaps (low, high, spacing / 4.0, around);
+  const auto first = [&] (double coordinate) {
+    return static_cast<long> (std::ceil (coordinate / spacing));
+  };
+  for (long j = first (low.y()); j * spacing <= high.y(); ++j)
+    for (long i = first (low.x()); i * spacing <= high.x(); ++i) {
+      const Eigen::Vector2d node (i * spacing, j * spacing);
+      int gx, gy;
+      if (!polygon.contains (node) || !gaps.cellOf (node, gx, gy) ||
+          gaps.distance (gx, gy) < MIN_GAP_SPACINGS * spacing)
+        continue;
+      append (polygon.centroid() + node.x() * polygon.axisU() +
+              node.y() * polygon.axisV() +
+              height (node.x(), node.y()) * polygon.normal());
+    }
+}
+
+} // namespace tda
+} // namespace pcl
+
+#define PCL_INSTANTIATE_HoleFilling(T)                                                 \
+  template class PCL_EXPORTS pcl::tda::HoleFilling<T>;

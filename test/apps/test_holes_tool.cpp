@@ -1,0 +1,170 @@
+// End-to-end tests of pcl_tda_holes: one output point per input point in input
+// order with its hole's number (non-finite points kept, label 0), the holes of a
+// generated surface found and labelled like the ground truth's rim bands, the CSV
+// table, the filled cloud (input first, then new points inside the holes), the
+// pictures, and the real scans.
+
+#include <pcl/common/point_tests.h>
+#include <pcl/io/pcd_io.h>
+#include <pcl/tda/generators/hole_surfaces.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include "test_data.h"
+#include "tool_runner.h"
+
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using pcl::tda::test::run;
+using pcl::tda::test::RunResult;
+
+namespace {
+
+std::string
+temporaryPath (const std::string& name)
+{
+  return pcl::tda::test::temporaryPath ("holes_tool", name);
+}
+
+RunResult
+runTool (const std::string& arguments)
+{
+  return run (std::string (PCL_TDA_BIN_DIR) + "/pcl_tda_holes " + arguments);
+}
+
+pcl::tda::HoleSurface
+plane (std::uint64_t seed)
+{
+  pcl::tda::HoleSurfaceParameters parameters;
+  parameters.seed = seed;
+  return pcl::tda::generateHoleSurface (parameters);
+}
+
+std::vector<std::string>
+lines (const std::string& path)
+{
+  std::ifstream file (path);
+  std::vector<std::string> all;
+  for (std::string line; std::getline (file, line);)
+    all.push_back (line);
+  return all;
+}
+
+TEST (HolesTool, LabelsTheRimBandsOfEveryHole)
+{
+  const pcl::tda::HoleSurface surface = plane (11);
+  pcl::PointCloud<pcl::PointXYZL> input = *surface.cloud;
+  input.push_back (pcl::PointXYZL (std::numeric_limits<float>::quiet_NaN(), 0, 0, 7));
+  const std::string in = temporaryPath ("in.pcd"), out = temporaryPath ("out.pcd"),
+                    csv = temporaryPath ("holes.csv"), filled = temporaryPath ("f.pcd"),
+                    svg = temporaryPath ("b.svg"), png = temporaryPath ("p.png");
+  pcl::io::savePCDFileBinary (in, input);
+  const RunResult result = runTool (in + " " + out + " -csv " + csv + " -fill " +
+                                    filled + " -svg " + svg + " -png " + png);
+  ASSERT_EQ (result.exit_code, 0) << result.output;
+  EXPECT_NE (result.output.find ("3 holes"), std::string::npos) << result.output;
+
+  pcl::PointCloud<pcl::PointXYZL> output;
+  ASSERT_EQ (pcl::io::loadPCDFile (out, output), 0);
+  ASSERT_EQ (output.size(), input.size());
+  EXPECT_FALSE (pcl::isXYZFinite (output.back()));
+  EXPECT_EQ (output.back().label, 0u);
+  // Each found hole's points lie around one true hole, and mostly on its band.
+  std::size_t agree = 0, labelled = 0;
+  for (std::size_t i = 0; i + 1 < input.size(); ++i) {
+    EXPECT_EQ (output[i].x, input[i].x);
+    if (output[i].label == 0)
+      continue;
+    ++labelled;
+    agree += input[i].label != pcl::tda::SURFACE_LABEL &&
+             input[i].label != pcl::tda::OUTER_BORDER_LABEL;
+  }
+  EXPECT_GT (labelled, 100u);
+  EXPECT_GT (agree, labelled * 7 / 10);
+
+  const std::vector<std::string> table = lines (csv);
+  ASSERT_EQ (table.size(), 4u);
+  EXPECT_EQ (table[0].rfind ("id,rim_points,perimeter,area,", 0), 0u);
+  std::size_t previous_rim = std::numeric_limits<std::size_t>::max();
+  for (std::size_t k = 1; k < table.size(); ++k) {
+    std::istringstream row (table[k]);
+    std::string id, rim_points;
+    std::getline (row, id, ',');
+    std::getline (row, rim_points, ',');
+    EXPECT_EQ (id, std::to_string (k));
+    EXPECT_LE (std::stoul (rim_points), previous_rim); // by decreasing rim length
+    previous_rim = std::stoul (rim_points);
+    // The last column lists the rim's input indices, each of a labelled point.
+    std::istringstream rim (table[k].substr (table[k].rfind (',') + 1));
+    std::size_t count = 0;
+    for (std::size_t index; rim >> index; ++count)
+      ASSERT_LT (index, output.size());
+    EXPECT_EQ (count, previous_rim);
+  }
+
+  pcl::PointCloud<pcl::PointXYZ> with_fill;
+  ASSERT_EQ (pcl::io::loadPCDFile (filled, with_fill), 0);
+  ASSERT_GT (with_fill.size(), input.size());
+  for (std::size_t i = input.size(); i < with_fill.size(); ++i) {
+    bool inside = false;
+    for (const auto& hole : surface.holes)
+      inside |= (with_fill[i].getVector3fMap() - hole.center).norm() <
+                hole.radius + 2.0f * surface.spacing;
+    EXPECT_TRUE (inside) << i;
+  }
+  EXPECT_GT (lines (svg).size(), 3u);
+  std::ifstream picture (png, std::ios::binary);
+  char magic[4] = {};
+  picture.read (magic, 4);
+  EXPECT_EQ (std::string (magic + 1, 3), "PNG");
+}
+
+TEST (HolesTool, CentroidFillAndShuffledInput)
+{
+  const pcl::tda::HoleSurface surface = plane (12);
+  const std::string in = temporaryPath ("in.pcd"), out = temporaryPath ("out.pcd"),
+                    filled = temporaryPath ("f.pcd");
+  pcl::io::savePCDFileBinary (in, *surface.cloud);
+  const RunResult result =
+      runTool (in + " " + out + " -fill " + filled + " -fill-mode centroid");
+  ASSERT_EQ (result.exit_code, 0) << result.output;
+  pcl::PointCloud<pcl::PointXYZ> with_fill;
+  ASSERT_EQ (pcl::io::loadPCDFile (filled, with_fill), 0);
+  EXPECT_EQ (with_fill.size(), surface.cloud->size() + surface.holes.size());
+
+  // Reversed input order: the same labels, point by point.
+  pcl::PointCloud<pcl::PointXYZL> output, reversed_output;
+  ASSERT_EQ (pcl::io::loadPCDFile (out, output), 0);
+  pcl::PointCloud<pcl::PointXYZL> reversed;
+  for (auto point = surface.cloud->rbegin(); point != surface.cloud->rend(); ++point)
+    reversed.push_back (*point);
+  const std::string reversed_in = temporaryPath ("reversed.pcd");
+  pcl::io::savePCDFileBinary (reversed_in, reversed);
+  ASSERT_EQ (runTool (reversed_in + " " + out).exit_code, 0);
+  ASSERT_EQ (pcl::io::loadPCDFile (out, reversed_output), 0);
+  ASSERT_EQ (reversed_output.size(), output.size());
+  for (std::size_t i = 0; i < output.size(); ++i)
+    ASSERT_EQ (output[i].label, reversed_output[output.size() - 1 - i].label) << i;
+}
+
+TEST (HolesTool, RealScans)
+{
+  for (const char* name : {"milk.pcd", "bunny.pcd"}) {
+    PCL_TDA_REQUIRE_DATA (name);
+    const std::string out = temporaryPath ("real.pcd");
+    const RunResult result = runTool (pcl::tda::test::dataFile (name) + " " + out);
+    EXPECT_EQ (result.exit_code, 0) << name << "\n" << result.output;
+    pcl::PointCloud<pcl::PointXYZL> output;
+    ASSERT_EQ (pcl::io::loadPCDFile (out, output), 0);
+    pcl::PointCloud<pcl::PointXYZ> input;
+    ASSERT_EQ (pcl::io::loadPCDFile (pcl::tda::test::dataFile (name), input), 0);
+    EXPECT_EQ (output.size(), input.size());
+  }
+}
+
+} // namespace

@@ -1,0 +1,193 @@
+/** HoleFilling on generated surfaces: new points on the true surface, inside the
+ * holes, spaced like the cloud, the input kept unchanged, and the filled holes gone
+ * from H1; the thesis' centroid mode; bad input. */
+#include <pcl/common/io.h>
+#include <pcl/tda/features/hole_boundary_estimation.h>
+#include <pcl/tda/generators/hole_surfaces.h>
+#include <pcl/tda/surface/hole_filling.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace {
+
+using pcl::tda::HoleSurface;
+using pcl::tda::HoleSurfaceKind;
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+struct Detected {
+  HoleSurface surface;
+  Cloud::Ptr cloud;
+  std::vector<pcl::tda::HoleRim> holes;
+};
+
+Detected
+detect (HoleSurfaceKind kind, std::uint64_t seed, float noise = 0.0f)
+{
+  pcl::tda::HoleSurfaceParameters parameters;
+  parameters.kind = kind;
+  parameters.seed = seed;
+  parameters.noise_sigma = noise;
+  Detected detected{
+      pcl::tda::generateHoleSurface (parameters), Cloud::Ptr (new Cloud), {}};
+  pcl::copyPointCloud (*detected.surface.cloud, *detected.cloud);
+  pcl::tda::HoleBoundaryEstimation<pcl::PointXYZ, pcl::Boundary> estimation;
+  estimation.setInputCloud (detected.cloud);
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  detected.holes = estimation.getHoles();
+  return detected;
+}
+
+/** The distance of \a p to the generated surface (plane z = 0, or the sphere). */
+double
+surfaceDistance (HoleSurfaceKind kind, const pcl::PointXYZ& p)
+{
+  if (kind == HoleSurfaceKind::SPHERE)
+    return std::abs (p.getVector3fMap().norm() - pcl::tda::HOLE_SPHERE_RADIUS);
+  return std::abs (p.z);
+}
+
+TEST (HoleFilling, SurfaceModeFillsEachHoleOnTheSurface)
+{
+  for (const HoleSurfaceKind kind : {HoleSurfaceKind::PLANE, HoleSurfaceKind::SPHERE})
+    for (const float noise : {0.0f, 0.1f}) {
+      SCOPED_TRACE (::testing::Message()
+                    << "kind " << static_cast<int> (kind) << " noise " << noise);
+      const Detected detected = detect (kind, 1, noise);
+      ASSERT_FALSE (detected.holes.empty());
+      pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+      filler.setInputCloud (detected.cloud);
+      filler.setHoles (detected.holes);
+      Cloud filled;
+      ASSERT_TRUE (filler.reconstruct (filled));
+      // The input first, unchanged.
+      ASSERT_GT (filled.size(), detected.cloud->size());
+      for (std::size_t i = 0; i < detected.cloud->size(); ++i)
+        ASSERT_EQ (filled[i].getVector3fMap(), (*detected.cloud)[i].getVector3fMap());
+      const float h = detected.surface.spacing;
+      const float sigma = noise * h;
+      // Every new point on the true surface and inside a true hole (or in a gap of
+      // the sampling just beside it, inside the rim).
+      for (std::size_t i = detected.cloud->size(); i < filled.size(); ++i) {
+        EXPECT_LT (surfaceDistance (kind, filled[i]), 3.0f * sigma + 0.05f * h);
+        bool inside = false;
+        for (const auto& hole : detected.surface.holes)
+          inside |= (filled[i].getVector3fMap() - hole.center).norm() <
+                    hole.radius + 2.0f * h;
+        EXPECT_TRUE (inside) << i;
+      }
+      // Per hole about as many points as the hole's area holds (h^2 each).
+      const auto& counts = filler.getNewPointCounts();
+      ASSERT_EQ (counts.size(), detected.holes.size());
+      for (std::size_t k = 0; k < counts.size(); ++k) {
+        const double expected = detected.holes[k].area / (h * h);
+        EXPECT_GT (counts[k], 0.5 * expected) << "hole " << k;
+        EXPECT_LT (counts[k], 1.5 * expected + 2.0) << "hole " << k;
+      }
+    }
+}
+
+TEST (HoleFilling, FilledHolesAreGoneFromH1)
+{
+  const Detected detected = detect (HoleSurfaceKind::PLANE, 2);
+  ASSERT_EQ (detected.holes.size(), 3u);
+  pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+  filler.setInputCloud (detected.cloud);
+  filler.setHoles (detected.holes);
+  Cloud::Ptr filled (new Cloud);
+  ASSERT_TRUE (filler.reconstruct (*filled));
+  pcl::tda::HoleBoundaryEstimation<pcl::PointXYZ, pcl::Boundary> again;
+  again.setInputCloud (filled);
+  pcl::PointCloud<pcl::Boundary> flags;
+  again.compute (flags);
+  EXPECT_TRUE (again.getHoles().empty());
+}
+
+TEST (HoleFilling, CentroidModeOnePointPerHoleAtItsCentre)
+{
+  const Detected detected = detect (HoleSurfaceKind::PLANE, 3);
+  pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+  filler.setInputCloud (detected.cloud);
+  filler.setHoles (detected.holes);
+  filler.setMode (pcl::tda::HoleFilling<pcl::PointXYZ>::Mode::CENTROID);
+  Cloud filled;
+  ASSERT_TRUE (filler.reconstruct (filled));
+  ASSERT_EQ (filled.size(), detected.cloud->size() + detected.holes.size());
+  for (std::size_t k = 0; k < detected.holes.size(); ++k) {
+    const auto& p = filled[detected.cloud->size() + k];
+    EXPECT_LT ((p.getVector3fMap() - detected.holes[k].centroid).norm(), 1e-5f);
+    // The rims of round holes centre on the holes.
+    float nearest = 1e9f;
+    for (const auto& hole : detected.surface.holes)
+      nearest = std::min (nearest, (p.getVector3fMap() - hole.center).norm());
+    EXPECT_LT (nearest, detected.surface.spacing);
+  }
+}
+
+TEST (HoleFilling, OtherFieldsCopiedFromTheNearestRimPoint)
+{
+  const Detected detected = detect (HoleSurfaceKind::PLANE, 4);
+  pcl::PointCloud<pcl::PointXYZL>::Ptr labelled (new pcl::PointCloud<pcl::PointXYZL>);
+  *labelled = *detected.surface.cloud;
+  pcl::tda::HoleFilling<pcl::PointXYZL> filler;
+  filler.setInputCloud (labelled);
+  filler.setHoles (detected.holes);
+  pcl::PointCloud<pcl::PointXYZL> filled;
+  ASSERT_TRUE (filler.reconstruct (filled));
+  ASSERT_GT (filled.size(), labelled->size());
+  for (std::size_t i = labelled->size(); i < filled.size(); ++i) {
+    const pcl::PointXYZL* nearest = nullptr;
+    float best = 1e9f;
+    for (const auto& hole : detected.holes)
+      for (const auto index : hole.rim) {
+        const float d =
+            ((*labelled)[index].getVector3fMap() - filled[i].getVector3fMap()).norm();
+        if (d < best) {
+          best = d;
+          nearest = &(*labelled)[index];
+        }
+      }
+    ASSERT_NE (nearest, nullptr);
+    EXPECT_EQ (filled[i].label, nearest->label);
+  }
+}
+
+TEST (HoleFilling, BadInput)
+{
+  const Detected detected = detect (HoleSurfaceKind::PLANE, 5);
+  Cloud filled;
+  {
+    pcl::tda::HoleFilling<pcl::PointXYZ> filler; // no input
+    EXPECT_FALSE (filler.reconstruct (filled));
+    EXPECT_TRUE (filled.empty());
+  }
+  {
+    pcl::tda::HoleFilling<pcl::PointXYZ> filler; // rims of another cloud
+    Cloud::Ptr small (new Cloud);
+    small->resize (10);
+    filler.setInputCloud (small);
+    filler.setHoles (detected.holes);
+    EXPECT_FALSE (filler.reconstruct (filled));
+    EXPECT_TRUE (filled.empty());
+  }
+  for (const double spacing : {-1.0, std::nan ("")}) {
+    pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+    filler.setInputCloud (detected.cloud);
+    filler.setHoles (detected.holes);
+    filler.setSpacing (spacing);
+    EXPECT_FALSE (filler.reconstruct (filled));
+    EXPECT_TRUE (filled.empty());
+  }
+  {
+    pcl::tda::HoleFilling<pcl::PointXYZ> filler; // no holes: the input as it is
+    filler.setInputCloud (detected.cloud);
+    ASSERT_TRUE (filler.reconstruct (filled));
+    EXPECT_EQ (filled.size(), detected.cloud->size());
+  }
+}
+
+} // namespace
