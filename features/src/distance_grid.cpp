@@ -21,6 +21,7 @@ DistanceGrid::DistanceGrid (const Eigen::Vector2d& low,
   nx_ = static_cast<int> ((high.x() - low.x()) / cell) + 1;
   ny_ = static_cast<int> ((high.y() - low.y()) / cell) + 1;
   nearest_.assign (static_cast<std::size_t> (nx_) * ny_, NO_SEED);
+  squared_distance_.assign (nearest_.size(), std::numeric_limits<double>::infinity());
   for (std::size_t i = 0; i < seeds.size(); ++i) {
     // A seed outside the box seeds the nearest cell of the border.
     const int ix = std::clamp (
@@ -56,9 +57,7 @@ DistanceGrid::cellOf (const Eigen::Vector2d& q, int& ix, int& iy) const
 double
 DistanceGrid::distance (int ix, int iy) const
 {
-  const std::uint32_t seed = nearestAt (ix, iy);
-  return seed == NO_SEED ? std::numeric_limits<double>::infinity()
-                         : (seeds_[seed] - center (ix, iy)).norm();
+  return std::sqrt (squared_distance_[static_cast<std::size_t> (iy) * nx_ + ix]);
 }
 
 std::uint32_t
@@ -74,10 +73,14 @@ DistanceGrid::offer (std::uint32_t seed, int ix, int iy)
 {
   if (seed == NO_SEED)
     return;
-  std::uint32_t& current = nearest_[static_cast<std::size_t> (iy) * nx_ + ix];
-  if (current == NO_SEED || (seeds_[seed] - center (ix, iy)).squaredNorm() <
-                                (seeds_[current] - center (ix, iy)).squaredNorm())
-    current = seed;
+  const std::size_t cell = static_cast<std::size_t> (iy) * nx_ + ix;
+  if (nearest_[cell] == seed)
+    return;
+  const double squared = (seeds_[seed] - center (ix, iy)).squaredNorm();
+  if (squared < squared_distance_[cell]) {
+    squared_distance_[cell] = squared;
+    nearest_[cell] = seed;
+  }
 }
 
 } // namespace tda

@@ -100,7 +100,9 @@ emptyRegions (const ProjectedPolygon& polygon,
     low = low.cwiseMin (c);
     high = high.cwiseMax (c);
   }
-  const double cell = std::max (min_cell, (high - low).maxCoeff() / EMPTINESS_GRID);
+  const double cell = std::max ({min_cell,
+                                 (high - low).maxCoeff() / EMPTINESS_GRID,
+                                 std::numeric_limits<double>::min()});
   const DistanceGrid grid (low, high, cell, points);
   const int nx = grid.width(), ny = grid.height();
   const auto center = [&] (int ix, int iy) { return grid.center (ix, iy); };
@@ -361,13 +363,11 @@ minimalCycles (const FilteredComplex& complex,
         return !result.edge_positive[e];
       }));
   const EdgeAdjacency graph = buildEdgeAdjacency (complex.numVertices(), edges);
-  double radius = 0.0;
-  for (const FilteredEdge& edge : edges)
-    radius = std::max (radius, edge.value);
   const auto count = static_cast<std::int64_t> (essential.size());
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
-    RimFinder finder (complex, graph, positions, radius / 8.0, min_clearance);
+    // Cells of a quarter of the smallest clearance sought: fine enough to tell it.
+    RimFinder finder (complex, graph, positions, min_clearance / 4.0, min_clearance);
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < count; ++i) {
       const SimplexIndex e = essential[i];

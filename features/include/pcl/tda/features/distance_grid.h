@@ -69,6 +69,7 @@ private:
   int ny_ = 0;
   const std::vector<Eigen::Vector2d>& seeds_;
   std::vector<std::uint32_t> nearest_;
+  std::vector<double> squared_distance_; // to the nearest seed
 };
 
 } // namespace tda
