@@ -270,6 +270,12 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
   {
     Estimation estimation;
     estimation.setInputCloud (cloud);
+    estimation.setMinHoleRadius (-0.1);
+    EXPECT_TRUE (fails (estimation));
+  }
+  {
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
     estimation.setRadius (0.01);
     estimation.setRimBandWidth (0.02); // wider than the radius
     EXPECT_TRUE (fails (estimation));

@@ -37,6 +37,13 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
                max_tilt_degrees_);
     return false;
   }
+  if (!(min_hole_radius_ >= 0.0) || !std::isfinite (min_hole_radius_)) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The min hole radius must be positive and "
+               "finite, or 0 for the default (got %g).\n",
+               getClassName().c_str(),
+               min_hole_radius_);
+    return false;
+  }
   if (!(band_width_ >= 0.0) || !std::isfinite (band_width_)) {
     PCL_ERROR ("[pcl::tda::%s::compute] The rim band width must be positive and "
                "finite, or 0 to choose it (got %g).\n",
@@ -115,7 +122,9 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
   }
   const EdgeAdjacency adjacency =
       buildEdgeAdjacency (complex_.numVertices(), complex_.edges());
-  const double min_clearance = min_hole_radius_ > 0.0 ? min_hole_radius_ : used_radius_;
+  const double min_clearance = min_hole_radius_ > 0.0
+                                   ? min_hole_radius_
+                                   : DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS * used_radius_;
   holes_ =
       holeRims (minimalCycles (complex_, result, positions, min_clearance, threads_),
                 complex_,
