@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <tuple>
 #include <vector>
 
 namespace pcl {
@@ -14,8 +15,9 @@ namespace tda {
 
 /** \brief The spacing of a cloud's points: the \a quantile (in (0, 1]) of the
  * distances from each point to its \a k -th nearest other point, over the finite
- * points (at most \a max_samples of them, evenly spread in the input order, so that
- * the cost is bounded on large clouds). Points at the same position are skipped. 0
+ * points (at most \a max_samples of them, evenly spread in (x, y, z) order, so that
+ * the cost is bounded on large clouds and the value does not depend on the input
+ * order). Points at the same position are skipped. 0
  * when there are fewer than k + 1 distinct finite points.
  *
  * With k = 1 and the median it is the typical sampling distance. A larger k follows
@@ -32,6 +34,11 @@ pointSpacing (const pcl::PointCloud<PointT>& cloud,
   for (const PointT& point : cloud)
     if (pcl::isXYZFinite (point))
       finite->push_back (point);
+  // The sample is taken in (x, y, z) order, so that the spacing does not depend on
+  // the input order.
+  std::sort (finite->begin(), finite->end(), [] (const PointT& a, const PointT& b) {
+    return std::tie (a.x, a.y, a.z) < std::tie (b.x, b.y, b.z);
+  });
   if (finite->size() < 2 || k == 0)
     return 0.0;
   pcl::search::KdTree<PointT> tree;

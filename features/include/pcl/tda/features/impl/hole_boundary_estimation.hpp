@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 namespace pcl {
 namespace tda {
@@ -58,12 +57,7 @@ template <typename PointInT, typename PointOutT>
 bool
 HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
 {
-  // In a canonical order, so that the sample the spacing is measured on, and so the
-  // radius, do not depend on the input order.
-  pcl::PointCloud<PointInT> points (*input_, *indices_);
-  std::sort (points.begin(), points.end(), [] (const PointInT& a, const PointInT& b) {
-    return std::tie (a.x, a.y, a.z) < std::tie (b.x, b.y, b.z);
-  });
+  const pcl::PointCloud<PointInT> points (*input_, *indices_);
   const double spacing = surfaceSpacing (points);
   if (!(spacing > 0.0)) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has fewer than %zu distinct finite "

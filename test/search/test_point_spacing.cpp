@@ -1,0 +1,76 @@
+/** pointSpacing(): known values on regular samplings, non-finite points and
+ * duplicates skipped, and the same value for any input order, also when only a
+ * sample of the points is measured. */
+#include <pcl/tda/search/point_spacing.h>
+#include <pcl/point_types.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+namespace {
+
+using Cloud = pcl::PointCloud<pcl::PointXYZ>;
+
+/** A square grid of \a side x \a side points, \a step apart, in the plane z = 0. */
+Cloud
+grid (int side, float step)
+{
+  Cloud cloud;
+  for (int i = 0; i < side; ++i)
+    for (int j = 0; j < side; ++j)
+      cloud.push_back (pcl::PointXYZ (i * step, j * step, 0.0f));
+  return cloud;
+}
+
+TEST (PointSpacing, RegularGridValues)
+{
+  const Cloud cloud = grid (30, 0.01f);
+  // Interior points: 4 neighbours at 1 step, 4 at sqrt(2), 4 at 2.
+  EXPECT_NEAR (pcl::tda::pointSpacing (cloud), 0.01, 1e-6);
+  EXPECT_NEAR (pcl::tda::pointSpacing (cloud, 0.5, 6), std::sqrt (2.0) * 0.01, 1e-6);
+  EXPECT_NEAR (pcl::tda::pointSpacing (cloud, 0.5, 10), 0.02, 1e-6);
+}
+
+TEST (PointSpacing, SkipsNonFiniteAndDuplicatePoints)
+{
+  Cloud cloud = grid (20, 0.02f);
+  const Cloud copy = cloud;
+  for (const auto& point : copy)
+    cloud.push_back (point); // every point twice
+  cloud.push_back (pcl::PointXYZ (std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f));
+  EXPECT_NEAR (pcl::tda::pointSpacing (cloud), 0.02, 1e-6);
+  EXPECT_EQ (pcl::tda::pointSpacing (Cloud()), 0.0);
+  Cloud single;
+  single.push_back (pcl::PointXYZ (1.0f, 2.0f, 3.0f));
+  single.push_back (pcl::PointXYZ (1.0f, 2.0f, 3.0f));
+  EXPECT_EQ (pcl::tda::pointSpacing (single), 0.0);
+}
+
+TEST (PointSpacing, IndependentOfInputOrder)
+{
+  // More points than the sample, so that which points are measured matters.
+  std::mt19937 rng (4);
+  std::uniform_real_distribution<float> coordinate (0.0f, 1.0f);
+  Cloud cloud;
+  for (int i = 0; i < 20000; ++i)
+    cloud.push_back (
+        pcl::PointXYZ (coordinate (rng), coordinate (rng), 0.1f * coordinate (rng)));
+  for (const std::size_t k : {1u, 6u})
+    for (const double quantile : {0.5, 0.9}) {
+      const double expected = pcl::tda::pointSpacing (cloud, quantile, k);
+      ASSERT_GT (expected, 0.0);
+      for (const unsigned seed : {1u, 2u, 3u}) {
+        Cloud shuffled = cloud;
+        std::mt19937 shuffler (seed);
+        std::shuffle (shuffled.begin(), shuffled.end(), shuffler);
+        EXPECT_EQ (pcl::tda::pointSpacing (shuffled, quantile, k), expected)
+            << "k " << k << " quantile " << quantile << " seed " << seed;
+      }
+    }
+}
+
+} // namespace
