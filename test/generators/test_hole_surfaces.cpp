@@ -277,6 +277,30 @@ TEST (HoleSurfaces, LabelsMatchTheDistancesToHolesAndBorder)
     }
 }
 
+TEST (HoleSurfaces, CutSamplesLieInTheirHolesOnTheSurface)
+{
+  const HoleSurfaceParameters defaults;
+  for (const HoleSurfaceKind kind : KINDS)
+    for (const std::uint64_t seed : SEEDS) {
+      SCOPED_TRACE (traceName (kind, seed));
+      const HoleSurface s = generate (kind, seed, 0.1f);
+      const double eps = 1e-3 * s.spacing;
+      // Every sample is kept or cut (no removal here).
+      EXPECT_EQ (s.cloud->size() + s.cut->size(), defaults.num_points);
+      std::vector<std::size_t> per_hole (s.holes.size(), 0);
+      for (const pcl::PointXYZL& point : *s.cut) {
+        const Eigen::Vector3d p = point.getVector3fMap().cast<double>();
+        ASSERT_LT (offSurface (kind, p), 1e-5); // noise-free
+        ASSERT_GE (point.label, 1u);
+        ASSERT_LE (point.label, s.holes.size());
+        ASSERT_LE (edgeDistance (kind, s.holes[point.label - 1], p), eps);
+        ++per_hole[point.label - 1];
+      }
+      for (const std::size_t count : per_hole)
+        EXPECT_GT (count, 0u);
+    }
+}
+
 TEST (HoleSurfaces, HolesLieOnTheSurfaceApartAndAwayFromTheBorder)
 {
   const HoleSurfaceParameters defaults;

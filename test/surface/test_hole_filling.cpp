@@ -2,6 +2,7 @@
  * holes, spaced like the cloud, the input kept unchanged, and the filled holes gone
  * from H1; the thesis' centroid mode; bad input. */
 #include <pcl/common/io.h>
+#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/generators/hole_surfaces.h>
 #include <pcl/tda/surface/hole_filling.h>
@@ -9,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -80,6 +82,39 @@ TEST (HoleFilling, SurfaceModeFillsEachHoleOnTheSurface)
                     hole.radius + 2.0f * h;
         EXPECT_TRUE (inside) << i;
       }
+      // Where the holes' true samples were: near them, and covering them.
+      pcl::KdTreeFLANN<pcl::PointXYZ> to_cut, to_new;
+      Cloud::Ptr cut (new Cloud), added (new Cloud);
+      pcl::copyPointCloud (*detected.surface.cut, *cut);
+      for (std::size_t i = detected.cloud->size(); i < filled.size(); ++i)
+        added->push_back (filled[i]);
+      to_cut.setInputCloud (cut);
+      to_new.setInputCloud (added);
+      std::vector<float> to_truth;
+      pcl::Indices nearest (1);
+      std::vector<float> squared (1);
+      for (const auto& point : *added) {
+        to_cut.nearestKSearch (point, 1, nearest, squared);
+        to_truth.push_back (std::sqrt (squared[0]));
+      }
+      std::nth_element (
+          to_truth.begin(), to_truth.begin() + to_truth.size() / 2, to_truth.end());
+      EXPECT_LE (to_truth[to_truth.size() / 2], h); // median distance to a true sample
+      std::size_t covered = 0, in_found_holes = 0;
+      for (const auto& truth : *detected.surface.cut) {
+        bool found = false; // the true hole is one of the detected ones
+        for (const auto& rim : detected.holes)
+          found |=
+              (rim.centroid - detected.surface.holes[truth.label - 1].center).norm() <
+              detected.surface.holes[truth.label - 1].radius;
+        if (!found)
+          continue;
+        ++in_found_holes;
+        to_new.nearestKSearch (
+            pcl::PointXYZ (truth.x, truth.y, truth.z), 1, nearest, squared);
+        covered += std::sqrt (squared[0]) <= 1.5f * h;
+      }
+      EXPECT_GT (covered, in_found_holes * 4 / 5); // the filled holes are covered
       // Per hole about as many points as the hole's area holds (h^2 each).
       const auto& counts = filler.getNewPointCounts();
       ASSERT_EQ (counts.size(), detected.holes.size());

@@ -579,20 +579,27 @@ generateHoleSurface (const HoleSurfaceParameters& parameters)
                              static_cast<float> (hole.radius)});
   result.cloud.reset (new pcl::PointCloud<pcl::PointXYZL>);
   result.removed.reset (new pcl::PointCloud<pcl::PointXYZ>);
+  result.cut.reset (new pcl::PointCloud<pcl::PointXYZL>);
   pcl::PointCloud<pcl::PointXYZL>& cloud = *result.cloud;
   cloud.reserve (samples.size());
   const double sigma = parameters.noise_sigma * h;
   for (const SurfaceSample& sample : samples) {
     std::uint32_t label = SURFACE_LABEL;
-    bool cut = false;
-    for (std::size_t i = 0; i < holes.size() && !cut; ++i) {
+    std::size_t cut_by = holes.size();
+    for (std::size_t i = 0; i < holes.size() && cut_by == holes.size(); ++i) {
       const double edge = surface->edgeDistance (holes[i], sample.point);
-      cut = edge <= 0.0;
-      if (!cut && edge <= band && label == SURFACE_LABEL)
+      if (edge <= 0.0)
+        cut_by = i;
+      else if (edge <= band && label == SURFACE_LABEL)
         label = static_cast<std::uint32_t> (i + 1);
     }
-    if (cut)
+    if (cut_by < holes.size()) {
+      pcl::PointXYZL point;
+      point.getVector3fMap() = sample.point.cast<float>();
+      point.label = static_cast<std::uint32_t> (cut_by + 1);
+      result.cut->push_back (point);
       continue;
+    }
     if (label == SURFACE_LABEL && surface->borderDistance (sample.point) <= band)
       label = OUTER_BORDER_LABEL;
     const Eigen::Vector3d q = sample.point + random.truncatedNormal3 (sigma);

@@ -146,6 +146,9 @@ struct HoleSurface {
   /** \brief The points removed at random (HoleSurfaceParameters::removal_fraction)
    * after the noise, for scoring a hole filling; empty when the fraction is 0. */
   pcl::PointCloud<pcl::PointXYZ>::Ptr removed;
+  /** \brief The samples the holes cut out, on the noise-free surface, labelled with
+   * their hole's number (i + 1): where a hole filling should put its points. */
+  pcl::PointCloud<pcl::PointXYZL>::Ptr cut;
   /** \brief The sampling spacing h: sqrt(area / num_points), the square root of
    * the area per point before the holes are cut. */
   float spacing = 0.0f;
