@@ -60,8 +60,9 @@ printHelp (const char* program)
   print_info ("    -csv F.csv  = also write one row per hole: its size, perimeter, "
               "area, centre,\n                  normal, birth and rim points\n");
   print_info ("    -svg F.svg  = also draw the H1 barcode of the complex\n");
-  print_info ("    -png F.png  = also draw the cloud with its rim bands in colour "
-              "(and, with\n                  -fill, the new points in red)\n");
+  print_info ("    -png F.png  = also draw the cloud with its rim bands (and, with "
+              "-fill, the new\n                  points) in their holes' colours, and "
+              "beside it the bands black and\n                  the new points red\n");
   print_info ("    -memory M   = refuse complexes over M MiB (default: half of the "
               "memory)\n");
   print_info ("  Outputs are written only when the whole run succeeds.\n");
@@ -214,6 +215,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     labelled[i].label = labels.empty() ? 0 : labels[i];
 
   Cloud filled;
+  std::vector<std::uint32_t> new_point_holes; // per new point, its hole's number
   if (!options.filled.empty()) {
     console.beginStep ("Filling", options.fill_mode);
     pcl::tda::HoleFilling<pcl::PointXYZ> filler;
@@ -226,6 +228,10 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       console.error ("Hole filling failed (see above).");
       return 1;
     }
+    const std::vector<std::size_t>& counts = filler.getNewPointCounts();
+    for (std::size_t k = 0; k < counts.size(); ++k)
+      new_point_holes.insert (
+          new_point_holes.end(), counts[k], static_cast<std::uint32_t> (k + 1));
     console.endStep (std::to_string (filled.size() - cloud->size()) + " new points");
   }
 
@@ -248,8 +254,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                                 plot);
     }
     if (!options.picture_png.empty()) {
-      // Left: rim bands in their holes' colours. Right: the surface grey, the rim
-      // bands black and the new points red.
+      // Left: rim bands and new points in their holes' colours. Right: the surface
+      // grey, the rim bands black and the new points red.
       pcl::PointCloud<pcl::PointXYZRGBL> picture;
       pcl::copyPointCloud (labelled, picture);
       for (auto& point : picture) {
@@ -261,7 +267,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
         point.getVector3fMap() = filled[i].getVector3fMap();
         point.r = 230;
         point.g = point.b = 0;
-        point.label = 0;
+        point.label = new_point_holes[i - cloud->size()];
         picture.push_back (point);
       }
       pcl::tda::saveCloudPicture (
