@@ -176,7 +176,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   console.beginStep ("Finding holes");
   pcl::PointCloud<pcl::Boundary> flags;
   {
-    pcl::tda::ProgressBar bar ("  complex");
+    pcl::tda::ProgressBar bar ("  complex, then 1-classes");
     estimation.setProgressCallback (
         [&bar] (std::size_t done, std::size_t total) { bar.update (done, total); });
     estimation.compute (flags);

@@ -4,7 +4,10 @@
 #include <pcl/tda/features/projected_polygon.h>
 #include <pcl/tda/search/radius_edges.h>
 
+#include <omp.h>
+
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -353,7 +356,8 @@ minimalCycles (const FilteredComplex& complex,
                const PersistenceResult& result,
                const std::vector<Point3d>& positions,
                double min_clearance,
-               unsigned int threads)
+               unsigned int threads,
+               const ProgressCallback& progress)
 {
   const std::vector<SimplexIndex> essential = essentialEdges (result);
   std::vector<std::vector<MinimalCycle>> per_class (essential.size());
@@ -364,6 +368,7 @@ minimalCycles (const FilteredComplex& complex,
       }));
   const EdgeAdjacency graph = buildEdgeAdjacency (complex.numVertices(), edges);
   const auto count = static_cast<std::int64_t> (essential.size());
+  std::atomic<std::size_t> done{0};
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
     // Cells of a quarter of the smallest clearance sought: fine enough to tell it.
@@ -372,6 +377,9 @@ minimalCycles (const FilteredComplex& complex,
     for (std::int64_t i = 0; i < count; ++i) {
       const SimplexIndex e = essential[i];
       per_class[i] = finder.rims (forest.path (edges[e].source, edges[e].target), e);
+      const std::size_t searched = ++done;
+      if (progress && omp_get_thread_num() == 0)
+        progress (searched, essential.size());
     }
   }
   std::vector<MinimalCycle> cycles;

@@ -288,6 +288,28 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
   }
 }
 
+TEST (HoleBoundaryEstimation, ReportsProgressOfBothHalves)
+{
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 6);
+  Estimation estimation;
+  estimation.setInputCloud (positionsOf (surface));
+  std::size_t calls = 0, last = 0, largest = 0;
+  bool ordered = true, within = true;
+  estimation.setProgressCallback ([&] (std::size_t done, std::size_t total) {
+    ++calls;
+    within &= total == 2000 && done <= total;
+    ordered &= done >= last;
+    last = done;
+    largest = std::max (largest, done);
+  });
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  EXPECT_GT (calls, 2u);
+  EXPECT_TRUE (within);
+  EXPECT_TRUE (ordered);
+  EXPECT_GT (largest, 1000u); // the search of the classes reported too
+}
+
 TEST (HoleBoundaryEstimation, MaxCycleLengthDropsLongRims)
 {
   const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 3);

@@ -191,7 +191,9 @@ public:
     return threads_;
   }
 
-  /** \brief Sets a callback told the progress of the complex's construction. */
+  /** \brief Sets a callback told the progress of compute(): the complex's
+   * construction (the builder's thousandths), then the search of the essential
+   * 1-classes, as (done, 2000). */
   void
   setProgressCallback (const ProgressCallback& progress)
   {
@@ -270,6 +272,8 @@ private:
   std::size_t memory_limit_ = defaultMemoryLimit();
   unsigned int threads_ = 0;
   ProgressCallback progress_;
+  /** The units of each half of the progress (the builder reports thousandths). */
+  static constexpr std::size_t PROGRESS_UNITS = 1000;
 
   FilteredComplex complex_;
   std::vector<HoleRim> holes_;

@@ -3,6 +3,7 @@
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/persistence_result.h>
 #include <pcl/tda/common/point3d.h>
+#include <pcl/tda/common/progress.h>
 
 #include <vector>
 
@@ -62,13 +63,16 @@ essentialEdges (const PersistenceResult& result);
  * \param[in] result its persistence, with H1 (max_dimension 1)
  * \param[in] positions the position of every vertex of \a complex
  * \param[in] min_clearance the radius of the smallest empty disk that makes a hole
- * \param[in] threads number of threads (0: OpenMP's default) */
+ * \param[in] threads number of threads (0: OpenMP's default)
+ * \param[in] progress optional callback (classes searched, classes), called from
+ * one thread */
 std::vector<MinimalCycle>
 minimalCycles (const FilteredComplex& complex,
                const PersistenceResult& result,
                const std::vector<Point3d>& positions,
                double min_clearance,
-               unsigned int threads = 0);
+               unsigned int threads = 0,
+               const ProgressCallback& progress = {});
 
 } // namespace tda
 } // namespace pcl

@@ -87,7 +87,10 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
   builder.setMaxDimension (2);
   builder.setNumberOfThreads (threads_);
   builder.setMemoryLimit (memory_limit_);
-  builder.setProgressCallback (progress_);
+  // The complex is the first half of the work, the search of the classes the other.
+  if (progress_)
+    builder.setProgressCallback (
+        [this] (std::size_t done, std::size_t total) { progress_ (done, 2 * total); });
   if (!builder.compute (complex_)) {
     PCL_ERROR ("[pcl::tda::%s::compute] Cannot build the complex (see above).\n",
                getClassName().c_str());
@@ -119,14 +122,20 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
   const double min_clearance = min_hole_radius_ > 0.0
                                    ? min_hole_radius_
                                    : DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS * used_radius_;
-  holes_ =
-      holeRims (minimalCycles (complex_, result, positions, min_clearance, threads_),
-                complex_,
-                positions,
-                adjacency,
-                max_tilt_degrees_,
-                max_cycle_length_,
-                min_clearance);
+  ProgressCallback search_progress;
+  if (progress_)
+    search_progress = [this] (std::size_t done, std::size_t total) {
+      progress_ (PROGRESS_UNITS + done * PROGRESS_UNITS / total, 2 * PROGRESS_UNITS);
+    };
+  holes_ = holeRims (
+      minimalCycles (
+          complex_, result, positions, min_clearance, threads_, search_progress),
+      complex_,
+      positions,
+      adjacency,
+      max_tilt_degrees_,
+      max_cycle_length_,
+      min_clearance);
   const std::vector<std::uint32_t> vertex_band =
       rimBand (holes_, positions, adjacency, used_band_width_, spacing);
   rim_band_labels_.assign (input_->size(), 0);
