@@ -355,6 +355,7 @@ std::vector<MinimalCycle>
 minimalCycles (const FilteredComplex& complex,
                const PersistenceResult& result,
                const std::vector<Point3d>& positions,
+               const EdgeAdjacency& adjacency,
                double min_clearance,
                unsigned int threads,
                const ProgressCallback& progress)
@@ -366,13 +367,13 @@ minimalCycles (const FilteredComplex& complex,
       buildEdgeAdjacency (complex.numVertices(), edges, [&] (SimplexIndex e) {
         return !result.edge_positive[e];
       }));
-  const EdgeAdjacency graph = buildEdgeAdjacency (complex.numVertices(), edges);
   const auto count = static_cast<std::int64_t> (essential.size());
   std::atomic<std::size_t> done{0};
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
     // Cells of a quarter of the smallest clearance sought: fine enough to tell it.
-    RimFinder finder (complex, graph, positions, min_clearance / 4.0, min_clearance);
+    RimFinder finder (
+        complex, adjacency, positions, min_clearance / 4.0, min_clearance);
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < count; ++i) {
       const SimplexIndex e = essential[i];

@@ -28,6 +28,7 @@
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 #include <pcl/point_types.h>
 
+#include "bench_statistics.h"
 #include "segmentation/cluster_oracles.h"
 
 #include <algorithm>
@@ -43,6 +44,9 @@
 #include <vector>
 
 namespace {
+
+using pcl::tda::bench::mean;
+using pcl::tda::bench::median;
 
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 using LabelledCloud = pcl::PointCloud<pcl::PointXYZRGBL>;
@@ -115,25 +119,6 @@ parseOptions (int argc, char** argv, Options& options)
   options.scenes = static_cast<std::size_t> (scenes);
   options.seed = static_cast<std::uint64_t> (seed);
   options.min_size = static_cast<pcl::uindex_t> (min_size);
-}
-
-double
-median (std::vector<double> values)
-{
-  if (values.empty())
-    return std::nan ("");
-  std::sort (values.begin(), values.end());
-  const std::size_t half = values.size() / 2;
-  return values.size() % 2 ? values[half] : 0.5 * (values[half - 1] + values[half]);
-}
-
-double
-mean (const std::vector<double>& values)
-{
-  double sum = 0.0;
-  for (const double v : values)
-    sum += v;
-  return values.empty() ? std::nan ("") : sum / values.size();
 }
 
 /** Median distance from a point to its nearest other point. */

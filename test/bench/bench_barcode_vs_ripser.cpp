@@ -9,6 +9,7 @@
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/point_types.h>
 
+#include "bench_statistics.h"
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +22,8 @@
 
 namespace {
 
+using pcl::tda::bench::median;
+
 /** Wall-clock seconds of running \a command through the shell; -1 if it failed. */
 double
 timeCommand (const std::string& command)
@@ -30,14 +33,6 @@ timeCommand (const std::string& command)
   const std::chrono::duration<double> elapsed =
       std::chrono::steady_clock::now() - start;
   return status == 0 ? elapsed.count() : -1.0;
-}
-
-double
-median (std::vector<double> values)
-{
-  std::sort (values.begin(), values.end());
-  const std::size_t n = values.size();
-  return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
 }
 
 } // namespace

@@ -26,14 +26,13 @@
 #include <pcl/tda/generators/random_sampling.h>
 #include <pcl/point_types.h>
 
+#include "bench_statistics.h"
 #include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <functional>
 #include <iterator>
 #include <limits>
 #include <sstream>
@@ -41,6 +40,10 @@
 #include <vector>
 
 namespace {
+
+using pcl::tda::bench::mean;
+using pcl::tda::bench::median;
+using pcl::tda::bench::seconds;
 
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 using Flags = std::vector<std::uint8_t>;
@@ -100,34 +103,6 @@ sweepSetting (std::size_t index)
        << setting.boundary_radius << " h, " << SWEEP_ANGLE_NAMES[a];
   setting.name = name.str();
   return setting;
-}
-
-double
-seconds (const std::function<void()>& work)
-{
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
-      .count();
-}
-
-double
-median (std::vector<double> values)
-{
-  if (values.empty())
-    return std::nan ("");
-  std::sort (values.begin(), values.end());
-  const std::size_t half = values.size() / 2;
-  return values.size() % 2 ? values[half] : 0.5 * (values[half - 1] + values[half]);
-}
-
-double
-mean (const std::vector<double>& values)
-{
-  double sum = 0.0;
-  for (const double v : values)
-    sum += v;
-  return values.empty() ? std::nan ("") : sum / static_cast<double> (values.size());
 }
 
 /** Per point flags (0 or 1) of a boundary cloud of \a size points; all 0 when the

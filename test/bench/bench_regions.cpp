@@ -24,10 +24,10 @@
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/point_types.h>
 
+#include "bench_statistics.h"
 #include "segmentation/segmentation_metrics.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -38,6 +38,9 @@
 #include <vector>
 
 namespace {
+
+using pcl::tda::bench::median;
+using pcl::tda::bench::seconds;
 
 using Cloud = pcl::PointCloud<pcl::PointXYZRGB>;
 using pcl::tda::test::adjustedRandIndex;
@@ -126,23 +129,6 @@ pclNormalGrowing (const Cloud::Ptr& cloud)
   std::vector<pcl::PointIndices> regions;
   growing.extract (regions);
   return regions;
-}
-
-double
-seconds (const std::function<void()>& work)
-{
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double> (std::chrono::steady_clock::now() - start)
-      .count();
-}
-
-double
-median (std::vector<double> values)
-{
-  std::sort (values.begin(), values.end());
-  const std::size_t half = values.size() / 2;
-  return values.size() % 2 ? values[half] : 0.5 * (values[half - 1] + values[half]);
 }
 
 /** Quality and time of one method on one scene. */

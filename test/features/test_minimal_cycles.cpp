@@ -52,6 +52,13 @@ TEST (ProjectedPolygon, NonConvexEvenOddRule)
   EXPECT_FALSE (u.contains (u.project ({1.5, 2.0, 0.0})));
 }
 
+/** The neighbours of every vertex of \a complex. */
+pcl::tda::EdgeAdjacency
+adjacencyOf (const FilteredComplex& complex)
+{
+  return pcl::tda::buildEdgeAdjacency (complex.numVertices(), complex.edges());
+}
+
 /** The example of thesis Sec 5.4.2 (Fig 5.7-5.9): vertices a..h (0..7), 12 edges, 4
  * triangles, beta_0 = beta_1 = 1. The edge values put the negative edges
  * {ab, ad, bc, be, eh, eg, df} and the positive ones {bd, ce, gh, dg, fg} as the
@@ -111,8 +118,8 @@ TEST (MinimalCycles, ThesisExampleEveryEngine)
     EXPECT_EQ (result.edge_positive, positive);
     // dg (edge 10) is the one unpaired positive edge.
     EXPECT_EQ (pcl::tda::essentialEdges (result), std::vector<SimplexIndex>{10});
-    const auto cycles =
-        pcl::tda::minimalCycles (complex, result, THESIS_POSITIONS, 0.6, 1);
+    const auto cycles = pcl::tda::minimalCycles (
+        complex, result, THESIS_POSITIONS, adjacencyOf (complex), 0.6, 1);
     ASSERT_EQ (cycles.size(), 1u);
     EXPECT_EQ (cycles[0].essential_edge, 10u);
     // The initial cycle d-a-b-e-g shrinks by the chord bd to d-b-e-g.
@@ -128,8 +135,9 @@ TEST (MinimalCycles, NoEmptyRegionWideEnoughGivesNoCycle)
 {
   const FilteredComplex complex = thesisExample();
   const auto result = pcl::tda::computePersistence (complex);
-  EXPECT_TRUE (
-      pcl::tda::minimalCycles (complex, result, THESIS_POSITIONS, 1.5).empty());
+  EXPECT_TRUE (pcl::tda::minimalCycles (
+                   complex, result, THESIS_POSITIONS, adjacencyOf (complex), 1.5)
+                   .empty());
 }
 
 /** Points of an annulus (inner radius 1, outer 2) on a jittered polar grid, in a
@@ -194,8 +202,12 @@ TEST (MinimalCycles, AnnulusRimHugsTheHoleForAnyOrderAndThreads)
 {
   const Annulus annulus = makeAnnulus (0);
   const auto result = pcl::tda::computePersistence (annulus.complex);
-  const auto cycles =
-      pcl::tda::minimalCycles (annulus.complex, result, annulus.positions, 0.5, 1);
+  const auto cycles = pcl::tda::minimalCycles (annulus.complex,
+                                               result,
+                                               annulus.positions,
+                                               adjacencyOf (annulus.complex),
+                                               0.5,
+                                               1);
   ASSERT_EQ (cycles.size(), 1u);
   // Every rim point is on the inner ring (radius 1 +- jitter) and the rim goes all
   // the way round: about 2 pi / 0.25 edges at least.
@@ -208,8 +220,12 @@ TEST (MinimalCycles, AnnulusRimHugsTheHoleForAnyOrderAndThreads)
     const Annulus shuffled = makeAnnulus (seed);
     const auto shuffled_result = pcl::tda::computePersistence (shuffled.complex);
     for (const unsigned threads : {1u, 2u, 4u}) {
-      const auto again = pcl::tda::minimalCycles (
-          shuffled.complex, shuffled_result, shuffled.positions, 0.5, threads);
+      const auto again = pcl::tda::minimalCycles (shuffled.complex,
+                                                  shuffled_result,
+                                                  shuffled.positions,
+                                                  adjacencyOf (shuffled.complex),
+                                                  0.5,
+                                                  threads);
       ASSERT_EQ (again.size(), 1u);
       // fromLists keeps the vertex numbering of the input, so the rim is compared
       // by position.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <pcl/tda/common/edge_adjacency.h>
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/persistence_result.h>
 #include <pcl/tda/common/point3d.h>
@@ -62,6 +63,7 @@ essentialEdges (const PersistenceResult& result);
  * \param[in] complex the filtered complex
  * \param[in] result its persistence, with H1 (max_dimension 1)
  * \param[in] positions the position of every vertex of \a complex
+ * \param[in] adjacency the neighbours of every vertex (all edges of \a complex)
  * \param[in] min_clearance the radius of the smallest empty disk that makes a hole
  * \param[in] threads number of threads (0: OpenMP's default)
  * \param[in] progress optional callback (classes searched, classes), called from
@@ -70,6 +72,7 @@ std::vector<MinimalCycle>
 minimalCycles (const FilteredComplex& complex,
                const PersistenceResult& result,
                const std::vector<Point3d>& positions,
+               const EdgeAdjacency& adjacency,
                double min_clearance,
                unsigned int threads = 0,
                const ProgressCallback& progress = {});

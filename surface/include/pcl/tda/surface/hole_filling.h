@@ -1,10 +1,12 @@
 #pragma once
 
+#include <pcl/search/kdtree.h>
 #include <pcl/tda/features/hole_rims.h>
 #include <pcl/pcl_base.h>
 #include <pcl/point_cloud.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -107,9 +109,15 @@ protected:
   using pcl::PCLBase<PointT>::deinitCompute;
 
 private:
-  /** \brief The new points of one hole, appended to \a output. */
+  /** \brief The new points of one hole, appended to \a output. In SURFACE mode
+   * \a tree searches the input and \a taken (one 0 per input point, left all 0)
+   * marks the surroundings already seen. */
   void
-  fillHole (const HoleRim& hole, double spacing, pcl::PointCloud<PointT>& output) const;
+  fillHole (const HoleRim& hole,
+            double spacing,
+            const pcl::search::KdTree<PointT>& tree,
+            std::vector<std::uint8_t>& taken,
+            pcl::PointCloud<PointT>& output) const;
 
   std::vector<HoleRim> holes_;
   Mode mode_ = Mode::SURFACE;

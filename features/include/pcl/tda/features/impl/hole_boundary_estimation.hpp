@@ -127,15 +127,19 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
     search_progress = [this] (std::size_t done, std::size_t total) {
       progress_ (PROGRESS_UNITS + done * PROGRESS_UNITS / total, 2 * PROGRESS_UNITS);
     };
-  holes_ = holeRims (
-      minimalCycles (
-          complex_, result, positions, min_clearance, threads_, search_progress),
-      complex_,
-      positions,
-      adjacency,
-      max_tilt_degrees_,
-      max_cycle_length_,
-      min_clearance);
+  holes_ = holeRims (minimalCycles (complex_,
+                                    result,
+                                    positions,
+                                    adjacency,
+                                    min_clearance,
+                                    threads_,
+                                    search_progress),
+                     complex_,
+                     positions,
+                     adjacency,
+                     max_tilt_degrees_,
+                     max_cycle_length_,
+                     min_clearance);
   const std::vector<std::uint32_t> vertex_band =
       rimBand (holes_, positions, adjacency, used_band_width_, spacing);
   rim_band_labels_.assign (input_->size(), 0);

@@ -63,10 +63,17 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
     return false;
   }
   output = *input_;
+  // One search tree and one set of marks for all holes (SURFACE mode only).
+  pcl::search::KdTree<PointT> tree;
+  std::vector<std::uint8_t> taken;
+  if (mode_ == Mode::SURFACE && !holes_.empty()) {
+    tree.setInputCloud (input_);
+    taken.assign (input_->size(), 0);
+  }
   for (const HoleRim& hole : holes_) {
     const std::size_t before = output.size();
     if (hole.rim.size() >= 3)
-      fillHole (hole, spacing, output);
+      fillHole (hole, spacing, tree, taken, output);
     new_point_counts_.push_back (output.size() - before);
   }
   output.width = static_cast<std::uint32_t> (output.size());
@@ -80,6 +87,8 @@ template <typename PointT>
 void
 HoleFilling<PointT>::fillHole (const HoleRim& hole,
                                double spacing,
+                               const pcl::search::KdTree<PointT>& tree,
+                               std::vector<std::uint8_t>& taken,
                                pcl::PointCloud<PointT>& output) const
 {
   using namespace hole_filling_detail;
@@ -120,9 +129,7 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
   }
 
   // The surroundings, in the rim's frame: plane coordinates and height.
-  pcl::search::KdTree<PointT> tree;
-  tree.setInputCloud (input_);
-  std::vector<std::uint8_t> taken (input_->size(), 0);
+  pcl::Indices surroundings;
   std::vector<Eigen::Vector2d> around;
   std::vector<double> heights;
   pcl::Indices neighbors;
@@ -134,6 +141,7 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
       if (taken[n])
         continue;
       taken[n] = 1;
+      surroundings.push_back (n);
       const PointT& p = (*input_)[n];
       const Point3d q{p.x, p.y, p.z};
       around.push_back (polygon.project (q));
@@ -141,6 +149,8 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
                              .dot (polygon.normal()));
     }
   }
+  for (const auto n : surroundings)
+    taken[n] = 0; // clean for the next hole
   // The quadratic height field (a plane when there are too few points for it).
   const int terms = around.size() >= 12 ? 6 : 3;
   Eigen::MatrixXd design (around.size(), terms);
