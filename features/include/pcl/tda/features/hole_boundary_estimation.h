@@ -17,24 +17,6 @@
 namespace pcl {
 namespace tda {
 
-/** \brief How many nearest neighbours measure a surface's spacing. */
-constexpr std::size_t SURFACE_SPACING_NEIGHBORS = 6;
-
-/** \brief The sampling spacing of a surface: the square root of the area per point,
- * estimated from the median distance d_k to the k-th nearest point (k =
- * SURFACE_SPACING_NEIGHBORS) as d_k sqrt(pi / k), since a disk of radius d_k holds
- * about k points. Unlike the nearest-neighbour distance it does not depend on how
- * regular the sampling is (a jittered grid and a random sample of the same density
- * give the same value), nor on scan lines that are denser along than across. 0 when
- * the cloud has fewer than k + 1 distinct finite points. */
-template <typename PointT>
-double
-surfaceSpacing (const pcl::PointCloud<PointT>& cloud)
-{
-  return pointSpacing (cloud, 0.5, SURFACE_SPACING_NEIGHBORS) *
-         std::sqrt (M_PI / static_cast<double> (SURFACE_SPACING_NEIGHBORS));
-}
-
 /** \brief The holes of a scanned surface from its minimal 1-cycles (thesis Ch. 5,
  * Alg 5.15), with per-point boundary flags that take the place of
  * pcl::BoundaryEstimation in a pipeline.

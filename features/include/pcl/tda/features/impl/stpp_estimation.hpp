@@ -1,0 +1,158 @@
+#pragma once
+
+#include <pcl/tda/features/stpp_estimation.h>
+#include <pcl/tda/search/canonical_order.h>
+#include <pcl/tda/search/point_spacing.h>
+
+#include <cmath>
+
+namespace pcl {
+namespace tda {
+
+template <typename PointInT, typename PointOutT>
+bool
+STPPEstimation<PointInT, PointOutT>::initCompute()
+{
+  if (!pcl::PCLBase<PointInT>::initCompute()) {
+    PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
+               getClassName().c_str());
+    return false;
+  }
+  if (!(radius_ >= 0.0) || !std::isfinite (radius_)) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The radius must be positive and finite, or 0 "
+               "to choose it (got %g).\n",
+               getClassName().c_str(),
+               radius_);
+    return false;
+  }
+  return true;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+STPPEstimation<PointInT, PointOutT>::compute (PointCloudOut& output)
+{
+  pairing_vector_.clear();
+  level_radii_.clear();
+  level_diagrams_.clear();
+  cloud_size_ = 0.0;
+  if (!initCompute()) {
+    output.width = output.height = 0;
+    output.clear();
+    return;
+  }
+  output.header = input_->header;
+  output.width = output.height = 1;
+  output.is_dense = true;
+  output.resize (1);
+  computeFeature (output);
+  this->deinitCompute();
+}
+
+template <typename PointInT, typename PointOutT>
+bool
+STPPEstimation<PointInT, PointOutT>::computeSignature (float* histogram)
+{
+  std::size_t skipped = 0;
+  const pcl::Indices order = canonicalOrder (*input_, *indices_, skipped);
+  std::vector<Point3d> all_points;
+  all_points.reserve (order.size());
+  for (const pcl::index_t index : order) {
+    const PointInT& p = (*input_)[index];
+    all_points.push_back ({p.x, p.y, p.z});
+  }
+  cloud_size_ = cloudSize (all_points);
+  const std::vector<Point3d> points =
+      max_points_ > 0 ? hashedSample (all_points, max_points_) : all_points;
+  double spacing = 0.0;
+  if (radius_ == 0.0) {
+    pcl::PointCloud<pcl::PointXYZ> cloud;
+    for (const Point3d& p : points)
+      cloud.push_back (pcl::PointXYZ (static_cast<float> (p[0]),
+                                      static_cast<float> (p[1]),
+                                      static_cast<float> (p[2])));
+    spacing = surfaceSpacing (cloud, SPACING_SAMPLES);
+  }
+  if (!(cloud_size_ > 0.0) || (radius_ == 0.0 && !(spacing > 0.0))) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The input has too few distinct finite points "
+               "(%zu finite of %zu indexed) to describe: at least %zu are needed.\n",
+               getClassName().c_str(),
+               all_points.size(),
+               indices_->size(),
+               SURFACE_SPACING_NEIGHBORS + 1);
+    return false;
+  }
+  level_radii_.push_back (radius_ > 0.0 ? radius_ : AUTO_RADIUS_PER_SPACING * spacing);
+  for (const double fraction : COARSE_RADII_PER_SIZE)
+    level_radii_.push_back (fraction * cloud_size_);
+
+  // Each coarse copy is made from the one before (the first from all points): its
+  // spacing doubles at each level.
+  std::vector<Point3d> coarse = all_points;
+  for (std::size_t level = 0; level < STPP_LEVELS; ++level) {
+    const double radius = level_radii_[level];
+    if (level > 0)
+      coarse = coarseCopy (coarse, radius / COARSE_RADIUS_PER_SPACING);
+    FilteredComplex complex;
+    PersistenceResult result;
+    if (!levelPersistence (level == 0 ? points : coarse,
+                           radius,
+                           homology_,
+                           memory_limit_,
+                           threads_,
+                           complex,
+                           result)) {
+      PCL_ERROR ("[pcl::tda::%s::compute] Cannot build the complex of level %zu, "
+                 "radius %g (see above).\n",
+                 getClassName().c_str(),
+                 level,
+                 radius);
+      return false;
+    }
+    // A coarse copy's own sampling cycles are born and die below twice its
+    // spacing: its curves start there, where what is left is the object's.
+    const double curve_start =
+        level == 0 ? 0.0 : 2.0 * radius / COARSE_RADIUS_PER_SPACING;
+    if (homology_ != STPPHomology::BETTI_1)
+      betti0LevelValues (complex,
+                         result,
+                         curve_start,
+                         radius,
+                         histogram + STPP_BETTI0_OFFSET +
+                             level * STPP_BETTI0_PER_LEVEL);
+    if (homology_ != STPPHomology::BETTI_0)
+      betti1LevelValues (complex,
+                         result,
+                         curve_start,
+                         radius,
+                         histogram + STPP_BETTI1_OFFSET +
+                             level * STPP_BETTI1_PER_LEVEL);
+    if (level == 0)
+      pairing_vector_ = pairingVector (complex, result, homology_);
+    level_diagrams_.push_back (result.diagram (complex));
+  }
+  histogram[STPP_SIZE_OFFSET] =
+      scale_invariant_ ? 0.0f : static_cast<float> (std::log10 (cloud_size_));
+  return true;
+}
+
+template <typename PointInT, typename PointOutT>
+void
+STPPEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
+{
+  float* histogram = output[0].histogram;
+  std::fill (histogram, histogram + STPP_SIGNATURE_SIZE, 0.0f);
+  if (!computeSignature (histogram)) {
+    pairing_vector_.clear();
+    level_radii_.clear();
+    level_diagrams_.clear();
+    output.width = output.height = 0;
+    output.clear();
+  }
+}
+
+} // namespace tda
+} // namespace pcl
+
+#define PCL_INSTANTIATE_STPPEstimation(T, OutT)                                        \
+  template class PCL_EXPORTS pcl::tda::STPPEstimation<T, OutT>;
