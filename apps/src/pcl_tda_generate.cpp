@@ -2,16 +2,20 @@
  * circle, torus or sphere with known Betti numbers, a tabletop scene labelled by
  * object, a tabletop or depth camera scene painted in colour regions and labelled by
  * region, or a surface with round holes labelled by hole rim) to a binary PCD
- * file. */
+ * file; or a data set of depth camera views of household objects by category, as
+ * PCD files and a manifest, to a folder. */
 
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_files.h>
+#include <pcl/tda/apps/data_set_folder.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/common/progress_bar.h>
 #include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/hole_surfaces.h>
+#include <pcl/tda/generators/object_views.h>
 #include <pcl/tda/generators/shapes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/exceptions.h>
@@ -20,8 +24,10 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -41,12 +47,21 @@ constexpr double MAX_REMOVE = 0.9;
 static_assert (static_cast<float> (MAX_REMOVE) == pcl::tda::MAX_HOLE_REMOVAL_FRACTION,
                "MAX_REMOVE is MAX_HOLE_REMOVAL_FRACTION");
 
+/** The most instances per category and views per instance of shapes. */
+constexpr long MAX_INSTANCES = 1000, MAX_VIEWS = 1000;
+/** The largest noise multiplier -noise accepts for shapes. */
+constexpr double MAX_NOISE_MULTIPLIER = 100.0;
+/** The manifest of a data set of views, in its folder. */
+const char* const MANIFEST = "manifest.csv";
+
 void
 printHelp (const char* program)
 {
   print_info ("Syntax is: %s "
               "<circle|torus|sphere|tabletop|regions|depth-regions|holes> output.pcd "
-              "<options>\n",
+              "<options>\n"
+              "       or %s shapes OUT_DIR <options>\n",
+              program,
               program);
   print_info ("  where the kinds are:\n");
   print_info (
@@ -68,11 +83,25 @@ printHelp (const char* program)
       "by hole rim:\n"
       "                    %u on the surface, k on the rim of hole k (1..), %u "
       "near the surface's\n"
-      "                    own border\n",
+      "                    own border\n"
+      "    shapes        = a data set for object category classification: views of "
+      "random\n"
+      "                    instances of household objects (mug, cup, ring, disc, "
+      "frame, tile,\n"
+      "                    ball, can, box, cone, bowl, bottle) by a simulated depth "
+      "camera, each\n"
+      "                    the object's points only (pcl::PointXYZRGB, camera "
+      "frame), written to\n"
+      "                    OUT_DIR/<category>_<instance>_<view>.pcd with "
+      "OUT_DIR/%s\n"
+      "                    (path,category,instance,view); OUT_DIR is created if "
+      "missing and must\n"
+      "                    not hold a manifest already\n",
       pcl::tda::TABLE_LABEL,
       pcl::tda::FIRST_OBJECT_LABEL,
       pcl::tda::SURFACE_LABEL,
-      pcl::tda::OUTER_BORDER_LABEL);
+      pcl::tda::OUTER_BORDER_LABEL,
+      MANIFEST);
   print_info ("  and the options are:\n");
   print_info (
       "    -n N       = number of points of a shape, 1 to %ld (default: circle "
@@ -84,7 +113,8 @@ printHelp (const char* program)
       "                 1 cm x 1 cm; at least 1750); for holes, the points "
       "sampled before the\n"
       "                 holes are cut, at least %zu (default %zu); not for "
-      "depth-regions\n",
+      "depth-regions\n"
+      "                 and shapes\n",
       MAX_POINTS,
       pcl::tda::MIN_HOLE_SURFACE_POINTS,
       pcl::tda::HoleSurfaceParameters().num_points);
@@ -96,11 +126,15 @@ printHelp (const char* program)
               "1/m, sigma k z^2 at\n"
               "                 depth z (default 0.0015); for holes, sigma in units "
               "of the spacing h,\n"
-              "                 below 1 (default 0)\n");
+              "                 below 1 (default 0); for shapes, a multiplier of the "
+              "camera's depth\n"
+              "                 noise, 0 to %g (default 1, Kinect-like; 3: three "
+              "times the noise)\n",
+              MAX_NOISE_MULTIPLIER);
   print_info ("    -colour-noise S\n"
               "               = colour noise sigma in levels of 0-255, 0 to %g "
               "(default 4); for tabletop,\n"
-              "                 regions and depth-regions only\n",
+              "                 regions, depth-regions and shapes only\n",
               MAX_COLOUR_NOISE);
   print_info ("    -seed S    = random seed, >= 0 (default 0); equal seeds give "
               "identical files\n");
@@ -110,6 +144,15 @@ printHelp (const char* program)
               "seed)\n",
               pcl::tda::MAX_TABLETOP_OBJECTS,
               pcl::tda::MAX_DEPTH_CAMERA_OBJECTS);
+  print_info ("  and for shapes only:\n");
+  print_info ("    -instances N = instances per category, 1 to %ld (default %zu)\n",
+              MAX_INSTANCES,
+              pcl::tda::ObjectViewParameters().instances);
+  print_info ("    -views N   = views per instance, 1 to %ld (default %zu)\n",
+              MAX_VIEWS,
+              pcl::tda::ObjectViewParameters().views);
+  print_info ("    -categories C1,C2,.. = the categories, each once (default: "
+              "all)\n");
   print_info ("  and for holes only:\n");
   print_info ("    -surface S = plane, sphere, cylinder, torus or heightfield "
               "(default plane)\n");
@@ -136,6 +179,9 @@ struct Options {
   std::vector<float> hole_radii = pcl::tda::HoleSurfaceParameters().hole_radii;
   double remove = 0.0;
   std::string removed;
+  // shapes only; instances and views 0 when not given
+  long instances = 0, views = 0;
+  std::vector<pcl::tda::ObjectCategory> categories = pcl::tda::allObjectCategories();
 };
 
 /** The text that follows the option \a name on the command line. */
@@ -178,6 +224,32 @@ parseHoleRadii (const std::string& text)
   }
 }
 
+/** Reads the value of -categories, category names separated by commas, each once.
+ * \throws pcl::BadArgumentException naming the option and value */
+std::vector<pcl::tda::ObjectCategory>
+parseCategories (const std::string& text)
+{
+  std::vector<pcl::tda::ObjectCategory> categories;
+  std::istringstream items (text + ",");
+  std::string item;
+  while (std::getline (items, item, ',')) {
+    pcl::tda::ObjectCategory category;
+    const bool known = pcl::tda::parseObjectCategory (item, category);
+    if (!known || std::find (categories.begin(), categories.end(), category) !=
+                      categories.end()) {
+      std::string names;
+      for (const std::string& name : pcl::tda::objectCategoryNames())
+        names += (names.empty() ? "" : ", ") + name;
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option -categories needs category names separated by "
+                           "commas, each once, from "
+                               << names << "; not '" << text << "'.");
+    }
+    categories.push_back (category);
+  }
+  return categories;
+}
+
 /** Reads the command line into \a options.
  * \throws pcl::BadArgumentException naming the option at fault */
 void
@@ -206,28 +278,55 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addNumber (
       "-remove", options.remove, pcl::tda::NumberRange::atLeast (0.0, MAX_REMOVE));
   command_line.addText ("-removed", options.removed);
+  command_line.addInteger ("-instances", options.instances, 1, MAX_INSTANCES);
+  command_line.addInteger ("-views", options.views, 1, MAX_VIEWS);
+  std::string categories;
+  command_line.addText ("-categories", categories);
   const std::vector<std::string> arguments = command_line.parse (argc, argv);
-  pcl::tda::checkArguments (arguments, {{"kind", ""}, {"output", ".pcd"}});
+  const bool shapes = !arguments.empty() && arguments[0] == "shapes";
+  if (shapes)
+    pcl::tda::checkArguments (arguments, {{"kind", ""}, {"output folder", ""}});
+  else
+    pcl::tda::checkArguments (arguments, {{"kind", ""}, {"output", ".pcd"}});
   options.kind = arguments[0];
   options.output = arguments[1];
   const std::string& kind = options.kind;
   const bool shape = kind == "circle" || kind == "torus" || kind == "sphere";
   const bool holes = kind == "holes";
-  if (!shape && !holes && kind != "tabletop" && kind != "regions" &&
+  if (!shape && !holes && !shapes && kind != "tabletop" && kind != "regions" &&
       kind != "depth-regions")
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "Unknown kind '"
                              << kind
                              << "': use circle, torus, sphere, tabletop, regions, "
-                                "depth-regions or holes.");
-  if (options.objects >= 0 && (shape || holes))
+                                "depth-regions, holes or shapes.");
+  if (options.objects >= 0 && (shape || holes || shapes))
     PCL_THROW_EXCEPTION (
         pcl::BadArgumentException,
         "Option -objects applies to tabletop, regions and depth-regions only.");
   if (options.colour_noise >= 0.0 && (shape || holes))
-    PCL_THROW_EXCEPTION (
-        pcl::BadArgumentException,
-        "Option -colour-noise applies to tabletop, regions and depth-regions only.");
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Option -colour-noise applies to tabletop, regions, "
+                         "depth-regions and shapes only.");
+  for (const char* option : {"-instances", "-views", "-categories"})
+    if (command_line.given (option) && !shapes)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option " << option << " applies to shapes only.");
+  if (shapes) {
+    if (options.n > 0)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option -n does not apply to shapes (views of a depth "
+                           "camera).");
+    if (options.noise > MAX_NOISE_MULTIPLIER)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option -noise needs a number >= 0 and <= "
+                               << MAX_NOISE_MULTIPLIER
+                               << " for shapes (a multiplier of the camera's depth "
+                                  "noise), not '"
+                               << argumentOf (argc, argv, "-noise") << "'.");
+    if (!categories.empty())
+      options.categories = parseCategories (categories);
+  }
   if (options.n > 0 && kind == "depth-regions")
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "Option -n does not apply to depth-regions (a 640 x 480 "
@@ -462,10 +561,84 @@ runHoles (const Options& options,
              : 1;
 }
 
+/** Generates the data set of views of \a options into its folder. */
+int
+runShapes (const Options& options, pcl::tda::ToolConsole& console)
+{
+  pcl::tda::ObjectViewParameters parameters;
+  parameters.categories = options.categories;
+  if (options.instances > 0)
+    parameters.instances = static_cast<std::size_t> (options.instances);
+  if (options.views > 0)
+    parameters.views = static_cast<std::size_t> (options.views);
+  if (options.noise >= 0.0)
+    parameters.noise_multiplier = static_cast<float> (options.noise);
+  if (options.colour_noise >= 0.0)
+    parameters.colour_noise = static_cast<float> (options.colour_noise);
+  parameters.seed = static_cast<std::uint64_t> (options.seed);
+  pcl::tda::checkObjectViewParameters (parameters);
+
+  // The rows of the manifest, in the order of the categories given.
+  struct Row {
+    pcl::tda::ObjectCategory category;
+    std::size_t instance, view;
+    std::string file;
+  };
+  std::vector<Row> rows;
+  std::vector<std::string> names;
+  for (const pcl::tda::ObjectCategory category : parameters.categories)
+    for (std::size_t instance = 0; instance < parameters.instances; ++instance)
+      for (std::size_t view = 0; view < parameters.views; ++view) {
+        rows.push_back ({category,
+                         instance,
+                         view,
+                         pcl::tda::objectCategoryName (category) + "_" +
+                             std::to_string (instance) + "_" + std::to_string (view) +
+                             ".pcd"});
+        names.push_back (rows.back().file);
+      }
+  pcl::tda::DataSetFolder folder (options.output, names, MANIFEST);
+
+  console.beginStep ("Generating",
+                     std::to_string (rows.size()) + " views of " +
+                         std::to_string (parameters.categories.size()) + " categories");
+  std::size_t points = 0, fewest = std::numeric_limits<std::size_t>::max();
+  std::ostringstream manifest;
+  manifest << "path,category,instance,view\n";
+  {
+    pcl::tda::ProgressBar progress ("  rendering");
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const Row& row = rows[k];
+      const pcl::tda::ObjectView view =
+          pcl::tda::renderObjectView (parameters, row.category, row.instance, row.view);
+      pcl::tda::savePointCloudFile (folder.staged (row.file), *view.cloud);
+      points += view.cloud->size();
+      fewest = std::min (fewest, view.cloud->size());
+      manifest << row.file << "," << pcl::tda::objectCategoryName (row.category) << ","
+               << row.instance << "," << row.view << "\n";
+      progress.update (k + 1, rows.size());
+    }
+  }
+  console.endStep (std::to_string (points) + " points, " +
+                   std::to_string (points / rows.size()) + " per view on average, " +
+                   std::to_string (fewest) + " at the fewest");
+
+  const std::string manifest_path =
+      (std::filesystem::path (options.output) / MANIFEST).string();
+  console.beginStep ("Saving", manifest_path);
+  pcl::tda::writeFileAtomically (folder.staged (MANIFEST),
+                                 [&] (std::ostream& out) { out << manifest.str(); });
+  folder.commit (names);
+  console.endStep (std::to_string (rows.size()) + " views in " + options.output);
+  return 0;
+}
+
 /** Generates the cloud of \a options and saves it. */
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
+  if (options.kind == "shapes")
+    return runShapes (options, console);
   pcl::tda::ToolOutputs outputs (
       "", {{"output", options.output}, {"-removed", options.removed}});
   const std::string& kind = options.kind;

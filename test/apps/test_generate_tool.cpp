@@ -1,10 +1,11 @@
 // End-to-end tests of pcl_tda_generate: loadable files of every kind, the same
-// tabletop, colour region, depth camera scenes and hole surfaces as the library, and
-// refusals that leave no files behind.
+// tabletop, colour region, depth camera scenes, hole surfaces and object views as the
+// library, and refusals that leave no files behind.
 
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/hole_surfaces.h>
+#include <pcl/tda/generators/object_views.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 
 #include <gtest/gtest.h>
@@ -304,4 +305,113 @@ TEST (GenerateTool, HolesFailOnBadArgumentsWithoutWritingFiles)
   EXPECT_EQ (removed_before, contents (removed));
   EXPECT_EQ ((std::set<std::string>{"out.pcd", "removed.pcd"}),
              fileNames (folder.path()));
+}
+
+TEST (GenerateTool, WritesADataSetOfObjectViewsWithItsManifest)
+{
+  const TemporaryFolder folder;
+  const std::string out = folder.path() + "/views";
+  ASSERT_EQ (0,
+             runTool ("shapes " + out +
+                      " -categories ring,box -instances 2 -views 2 -noise 2 -seed 4"));
+  // The manifest lists every view, paths relative to its folder.
+  EXPECT_EQ ("path,category,instance,view\n"
+             "ring_0_0.pcd,ring,0,0\nring_0_1.pcd,ring,0,1\n"
+             "ring_1_0.pcd,ring,1,0\nring_1_1.pcd,ring,1,1\n"
+             "box_0_0.pcd,box,0,0\nbox_0_1.pcd,box,0,1\n"
+             "box_1_0.pcd,box,1,0\nbox_1_1.pcd,box,1,1\n",
+             contents (out + "/manifest.csv"));
+  EXPECT_EQ ((std::set<std::string>{"manifest.csv",
+                                    "ring_0_0.pcd",
+                                    "ring_0_1.pcd",
+                                    "ring_1_0.pcd",
+                                    "ring_1_1.pcd",
+                                    "box_0_0.pcd",
+                                    "box_0_1.pcd",
+                                    "box_1_0.pcd",
+                                    "box_1_1.pcd"}),
+             fileNames (out));
+  // Each file is the library's view.
+  pcl::tda::ObjectViewParameters parameters;
+  parameters.categories = {pcl::tda::ObjectCategory::RING,
+                           pcl::tda::ObjectCategory::BOX};
+  parameters.instances = parameters.views = 2;
+  parameters.noise_multiplier = 2.0f;
+  parameters.seed = 4;
+  pcl::PointCloud<pcl::PointXYZRGB> cloud;
+  ASSERT_EQ (0, pcl::io::loadPCDFile (out + "/box_1_0.pcd", cloud));
+  EXPECT_TRUE (identical (
+      *pcl::tda::renderObjectView (parameters, pcl::tda::ObjectCategory::BOX, 1, 0)
+           .cloud,
+      cloud));
+  EXPECT_EQ (cloud.size(), cloud.width);
+  EXPECT_EQ (1u, cloud.height);
+
+  // A second data set is never mixed into the folder.
+  const std::string manifest = contents (out + "/manifest.csv");
+  const pcl::tda::test::RunResult refused =
+      pcl::tda::test::run (std::string (PCL_TDA_BIN_DIR) + "/pcl_tda_generate shapes " +
+                           out + " -categories cup -instances 1 -views 1");
+  EXPECT_NE (0, refused.exit_code);
+  EXPECT_NE (std::string::npos, refused.output.find ("manifest.csv")) << refused.output;
+  EXPECT_EQ (manifest, contents (out + "/manifest.csv"));
+  EXPECT_EQ (9u, fileNames (out).size());
+
+  // An existing folder without a manifest takes a data set; its files stay.
+  const std::string other = folder.path() + "/other";
+  std::filesystem::create_directory (other);
+  std::ofstream (other + "/notes.txt") << "mine\n";
+  ASSERT_EQ (0, runTool ("shapes " + other + " -categories cup -instances 1 -views 1"));
+  EXPECT_EQ ((std::set<std::string>{"cup_0_0.pcd", "manifest.csv", "notes.txt"}),
+             fileNames (other));
+}
+
+TEST (GenerateTool, ObjectViewsFailOnBadArgumentsWithoutWritingFiles)
+{
+  const TemporaryFolder folder;
+  const std::string out = folder.path() + "/views";
+  const std::vector<std::string> bad = {
+      "-instances 0",
+      "-instances -1",
+      "-instances 1001",
+      "-instances many",
+      "-views 0",
+      "-views 1001",
+      "-categories mug,foo",
+      "-categories mug,mug",
+      "-categories mug,",
+      "-categories Mug",
+      "-categories",
+      "-noise -1",
+      "-noise 101",
+      "-noise abc",
+      "-colour-noise -1",
+      "-colour-noise 300",
+      "-seed -1",
+      "-n 100",
+      "-objects 2",
+      "-surface plane",
+      "-remove 0.1",
+      "-views 2 -views 3",
+      out + "/extra",
+  };
+  for (const std::string& arguments : bad) {
+    // Small data sets, should an argument be taken.
+    const bool counts = arguments.find ("-instances") != std::string::npos ||
+                        arguments.find ("-views") != std::string::npos;
+    EXPECT_NE (0,
+               runTool ("shapes " + out + (counts ? " " : " -instances 1 -views 1 ") +
+                        arguments))
+        << arguments;
+  }
+  // The options of shapes do not apply to other kinds.
+  const std::string file = folder.path() + "/out.pcd";
+  EXPECT_NE (0, runTool ("circle " + file + " -instances 2"));
+  EXPECT_NE (0, runTool ("tabletop " + file + " -views 2"));
+  EXPECT_NE (0, runTool ("depth-regions " + file + " -categories mug"));
+  // The output must be a folder whose parent exists.
+  EXPECT_NE (0, runTool ("shapes " + folder.path() + "/missing/views"));
+  std::ofstream (file) << "not a folder\n";
+  EXPECT_NE (0, runTool ("shapes " + file + " -instances 1 -views 1"));
+  EXPECT_EQ ((std::set<std::string>{"out.pcd"}), fileNames (folder.path()));
 }

@@ -36,6 +36,20 @@ identical (const pcl::PointCloud<pcl::PointXYZRGBL>& a,
   return true;
 }
 
+/** \brief Bitwise equality of coordinates and colour of every point. */
+inline bool
+identical (const pcl::PointCloud<pcl::PointXYZRGB>& a,
+           const pcl::PointCloud<pcl::PointXYZRGB>& b)
+{
+  if (a.size() != b.size())
+    return false;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    if (std::memcmp (a[i].data, b[i].data, 3 * sizeof (float)) != 0 ||
+        a[i].rgba != b[i].rgba)
+      return false;
+  return true;
+}
+
 /** \brief Bitwise equality of coordinates and label of every point. */
 inline bool
 identical (const pcl::PointCloud<pcl::PointXYZL>& a,

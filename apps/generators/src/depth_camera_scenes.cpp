@@ -4,11 +4,13 @@
 #include <pcl/exceptions.h>
 #include <pcl/point_types_conversion.h>
 
+#include "depth_camera.h"
+#include "signed_distances.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
-#include <sstream>
 #include <utility>
 
 namespace pcl {
@@ -31,20 +33,10 @@ constexpr double CAPSULE_MIN_LENGTH = 0.05, CAPSULE_MAX_LENGTH = 0.14;
 constexpr double MAX_OBJECT_HEIGHT = CONE_MAX_HEIGHT;
 constexpr std::size_t NUM_KINDS = 5;
 
-/** Sphere tracing: a ray hits a surface when its distance bound falls below
- * HIT_EPSILON (metres); rays that take more steps pass by (silhouettes). */
-constexpr double HIT_EPSILON = 1e-5;
-constexpr int MAX_TRACE_STEPS = 500;
-/** Step of the central differences that give surface normals, in metres. */
-constexpr double NORMAL_STEP = 1e-6;
-/** Shadow rays start this far off the surface, in metres. */
-constexpr double SHADOW_OFFSET = 1e-4;
 constexpr std::size_t MAX_IMAGE_SIDE = 4096;
 constexpr int MAX_PLACEMENT_ATTEMPTS = 300;
 constexpr int MAX_LAYOUT_ATTEMPTS = 100;
 constexpr int GAP_BISECTION_STEPS = 60;
-/** Shading of the colours: ambient part and part proportional to cos(incidence). */
-constexpr double AMBIENT = 0.35, DIFFUSE = 0.65;
 
 using Colour = std::array<std::uint8_t, 3>;
 const Colour TABLE_COLOUR = {165, 150, 125};
@@ -179,32 +171,6 @@ footprintGap (const Footprint& a, const Footprint& b)
   return coreDistance (a.core, b.core) - a.radius - b.radius;
 }
 
-/** Exact distance to a box of half sides \a half centred at the origin (negative
- * inside). */
-double
-boxDistance (const Eigen::Vector3d& p, const Eigen::Vector3d& half)
-{
-  const Eigen::Vector3d q = p.cwiseAbs() - half;
-  return q.cwiseMax (0.0).norm() + std::min (q.maxCoeff(), 0.0);
-}
-
-/** Exact distance to a solid truncated cone standing on z = 0: bottom radius r1,
- * top radius r2, height h (negative inside). */
-double
-coneDistance (const Eigen::Vector3d& p, double r1, double r2, double h)
-{
-  const double half = 0.5 * h;
-  const Eigen::Vector2d q (p.head<2>().norm(), p.z() - half);
-  const Eigen::Vector2d k1 (r2, half);
-  const Eigen::Vector2d k2 (r2 - r1, h);
-  const Eigen::Vector2d ca (q.x() - std::min (q.x(), q.y() < 0.0 ? r1 : r2),
-                            std::abs (q.y()) - half);
-  const Eigen::Vector2d cb =
-      q - k1 + k2 * std::clamp ((k1 - q).dot (k2) / k2.squaredNorm(), 0.0, 1.0);
-  const double sign = cb.x() < 0.0 && ca.y() < 0.0 ? -1.0 : 1.0;
-  return sign * std::sqrt (std::min (ca.squaredNorm(), cb.squaredNorm()));
-}
-
 /** An object on the table: its geometry as a distance bound for sphere tracing and
  * as a footprint for the layout. */
 struct Solid {
@@ -234,17 +200,15 @@ struct Solid {
     switch (kind) {
     case DepthObjectKind::BOWL: {
       const double radius = size.z();
-      const Eigen::Vector3d q = p - Eigen::Vector3d (0.0, 0.0, radius);
-      const double shell =
-          std::abs (q.norm() - (radius - 0.5 * BOWL_WALL)) - 0.5 * BOWL_WALL;
-      return std::max (shell, q.z());
+      return hemisphericalShellDistance (
+          p - Eigen::Vector3d (0.0, 0.0, radius), radius, BOWL_WALL);
     }
     case DepthObjectKind::CONE:
       return coneDistance (p, 0.5 * size.x(), top_radius, size.z());
     case DepthObjectKind::RING: {
       const double tube = 0.5 * size.z();
-      const double radius = 0.5 * size.x() - tube;
-      return Eigen::Vector2d (p.head<2>().norm() - radius, p.z() - tube).norm() - tube;
+      return torusDistance (
+          p - Eigen::Vector3d (0.0, 0.0, tube), 0.5 * size.x() - tube, tube);
     }
     case DepthObjectKind::L_BLOCK: {
       const double length = size.x(), width = size.y(), height = size.z();
@@ -270,12 +234,8 @@ struct Solid {
   Eigen::Vector3d
   normal (const Eigen::Vector3d& p) const
   {
-    Eigen::Vector3d gradient;
-    for (int k = 0; k < 3; ++k) {
-      const Eigen::Vector3d step = NORMAL_STEP * Eigen::Vector3d::Unit (k);
-      gradient[k] = distance (p + step) - distance (p - step);
-    }
-    return gradient.normalized();
+    return distanceNormal ([this] (const Eigen::Vector3d& q) { return distance (q); },
+                           p);
   }
 
   /** Centre and radius of a sphere holding the object. */
@@ -463,24 +423,13 @@ traceObjects (const std::vector<Solid>& solids,
   int hit = -1;
   for (std::size_t k = 0; k < solids.size(); ++k) {
     const Solid& solid = solids[k];
-    const Eigen::Vector3d offset = origin - solid.boundCentre();
-    const double b = offset.dot (direction);
-    const double discriminant =
-        b * b - offset.squaredNorm() + solid.boundRadius() * solid.boundRadius();
-    if (discriminant <= 0.0)
-      continue;
-    const double root = std::sqrt (discriminant);
-    const double end = std::min (-b + root, t_hit);
-    double t = std::max (-b - root, 0.0);
-    for (int step = 0; step < MAX_TRACE_STEPS && t < end; ++step) {
-      const double d = solid.distance (origin + t * direction);
-      if (d < HIT_EPSILON) {
-        t_hit = t;
-        hit = static_cast<int> (k);
-        break;
-      }
-      t += d;
-    }
+    if (sphereTrace ([&solid] (const Eigen::Vector3d& p) { return solid.distance (p); },
+                     solid.boundCentre(),
+                     solid.boundRadius(),
+                     origin,
+                     direction,
+                     t_hit))
+      hit = static_cast<int> (k);
   }
   return hit;
 }
@@ -491,12 +440,7 @@ template <typename... Parts>
 void
 require (bool valid, const Parts&... message)
 {
-  if (valid)
-    return;
-  std::ostringstream text;
-  (text << ... << message);
-  PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                       "generateDepthCameraScene: " << text.str());
+  checkParameter (valid, "generateDepthCameraScene", message...);
 }
 
 void
@@ -569,13 +513,6 @@ checkDepthCameraParameters (const DepthCameraParameters& p)
            p.grazing_start_deg,
            " and full ",
            p.grazing_full_deg);
-}
-
-std::uint8_t
-shade (std::uint8_t value, double cos_incidence)
-{
-  return static_cast<std::uint8_t> (
-      std::lround (value * (AMBIENT + DIFFUSE * cos_incidence)));
 }
 
 /** The colour in CIELAB, by PCL's conversion. */
@@ -698,14 +635,6 @@ paintObjects (const std::vector<Solid>& solids,
   return tones;
 }
 
-/** Adds to \a value a colour noise offset, rounded and clamped to 0-255. */
-std::uint8_t
-addColourNoise (std::uint8_t value, double offset)
-{
-  return static_cast<std::uint8_t> (
-      std::clamp (std::lround (value + offset), 0L, 255L));
-}
-
 } // namespace
 
 DepthCameraScene
@@ -716,26 +645,20 @@ generateDepthCameraScene (const DepthCameraParameters& parameters)
   DepthCameraScene scene;
 
   // Camera: looks at the table centre, no roll; optical frame x right, y down.
-  const double azimuth = random.uniform (0.0, 2.0 * M_PI);
-  const double elevation =
-      random.uniform (parameters.min_elevation_deg, parameters.max_elevation_deg) *
-      M_PI / 180.0;
-  const double distance =
-      random.uniform (parameters.min_distance, parameters.max_distance);
-  const Eigen::Vector3d camera =
-      distance * Eigen::Vector3d (std::cos (elevation) * std::cos (azimuth),
-                                  std::cos (elevation) * std::sin (azimuth),
-                                  std::sin (elevation));
-  const Eigen::Vector3d forward = -camera.normalized();
-  const Eigen::Vector3d right = forward.cross (Eigen::Vector3d::UnitZ()).normalized();
-  Eigen::Matrix3d rotation;
-  rotation << right, forward.cross (right), forward;
-  const Eigen::Vector3d projector = camera + parameters.baseline * right;
-  scene.camera_pose.linear() = rotation.cast<float>();
+  const DepthSensorModel sensor = depthSensorModel (parameters);
+  const CameraPose pose = drawCameraPose (random,
+                                          parameters.min_distance,
+                                          parameters.max_distance,
+                                          parameters.min_elevation_deg,
+                                          parameters.max_elevation_deg);
+  const Eigen::Vector3d& camera = pose.position;
+  const Eigen::Vector3d projector = projectorPosition (sensor, pose);
+  scene.camera_pose.linear() = pose.rotation.cast<float>();
   scene.camera_pose.translation() = camera.cast<float>();
-  scene.distance = static_cast<float> (distance);
-  scene.elevation_deg = static_cast<float> (elevation * 180.0 / M_PI);
-  const Eigen::Vector3d plane_normal = rotation.transpose() * Eigen::Vector3d::UnitZ();
+  scene.distance = static_cast<float> (pose.distance);
+  scene.elevation_deg = static_cast<float> (pose.elevation * 180.0 / M_PI);
+  const Eigen::Vector3d plane_normal =
+      pose.rotation.transpose() * Eigen::Vector3d::UnitZ();
   scene.table_plane << plane_normal.cast<float>(), static_cast<float> (camera.z());
 
   std::array<Colour, MAX_DEPTH_CAMERA_OBJECTS> palette = OBJECT_PALETTE;
@@ -825,94 +748,53 @@ generateDepthCameraScene (const DepthCameraParameters& parameters)
   scene.cloud->is_dense = false;
   const double half_width = 0.5 * parameters.table_width;
   const double half_depth = 0.5 * parameters.table_depth;
-  const double focal_baseline =
-      static_cast<double> (parameters.fx) * parameters.baseline;
-  for (std::size_t v = 0; v < parameters.height; ++v)
-    for (std::size_t u = 0; u < parameters.width; ++u) {
-      const Eigen::Vector3d pixel_ray (
-          (static_cast<double> (u) - parameters.cx) / parameters.fx,
-          (static_cast<double> (v) - parameters.cy) / parameters.fy,
-          1.0);
-      const Eigen::Vector3d direction = (rotation * pixel_ray).normalized();
-      double t = std::numeric_limits<double>::infinity();
-      if (direction.z() < 0.0) {
-        const double t_table = -camera.z() / direction.z();
-        const Eigen::Vector3d p = camera + t_table * direction;
-        if (std::abs (p.x()) <= half_width && std::abs (p.y()) <= half_depth)
-          t = t_table;
-      }
-      const int object = traceObjects (solids, camera, direction, t);
-      if (!std::isfinite (t))
-        continue;
-      const Eigen::Vector3d p = camera + t * direction;
-      const Eigen::Vector3d normal = object < 0
-                                         ? Eigen::Vector3d (Eigen::Vector3d::UnitZ())
-                                         : solids[object].normal (p);
-
-      if (parameters.projector_shadows) {
-        const Eigen::Vector3d start = p + SHADOW_OFFSET * normal;
-        const Eigen::Vector3d to_projector = projector - start;
-        double t_shadow = to_projector.norm();
-        if (traceObjects (solids, start, to_projector / t_shadow, t_shadow) >= 0)
-          continue;
-      }
-      const double cos_incidence = std::min (std::abs (normal.dot (direction)), 1.0);
-      const double incidence = std::acos (cos_incidence) * 180.0 / M_PI;
-      if (incidence >= parameters.grazing_full_deg ||
-          (incidence > parameters.grazing_start_deg &&
-           random.uniform() *
-                   (parameters.grazing_full_deg - parameters.grazing_start_deg) <
-               incidence - parameters.grazing_start_deg))
-        continue;
-
-      const double depth = (p - camera).dot (forward);
-      double measured =
-          depth + random.truncatedNormal (parameters.noise_coefficient * depth * depth,
-                                          NOISE_TRUNCATION);
-      if (!(measured > 0.0))
-        continue;
-      if (parameters.disparity_step > 0.0f) {
-        const double steps =
-            std::round (focal_baseline / measured / parameters.disparity_step);
-        measured = focal_baseline / (std::max (steps, 1.0) * parameters.disparity_step);
-      }
-
-      if (object < 0) {
-        ++scene.num_table_points;
-        if (parameters.remove_table)
-          continue;
-      }
-      pcl::PointXYZRGBL& point = (*scene.cloud) (u, v);
-      point.getVector3fMap() = (measured * pixel_ray).cast<float>();
-      const std::size_t slot =
-          object < 0
-              ? 0
-              : first_slot[object] + tones[object].partOf (solids[object], p, normal);
-      pixel_slots[v * parameters.width + u] = slot;
-      const Colour colour = {slots[slot].r, slots[slot].g, slots[slot].b};
-      point.r = shade (colour[0], cos_incidence);
-      point.g = shade (colour[1], cos_incidence);
-      point.b = shade (colour[2], cos_incidence);
-      if (parameters.colour_noise > 0.0f) {
-        const double sigma = parameters.colour_noise;
-        const double brightness =
-            colour_random.truncatedNormal (sigma, NOISE_TRUNCATION);
-        point.r = addColourNoise (
-            point.r,
-            brightness + colour_random.truncatedNormal (0.5 * sigma, NOISE_TRUNCATION));
-        point.g = addColourNoise (
-            point.g,
-            brightness + colour_random.truncatedNormal (0.5 * sigma, NOISE_TRUNCATION));
-        point.b = addColourNoise (
-            point.b,
-            brightness + colour_random.truncatedNormal (0.5 * sigma, NOISE_TRUNCATION));
-      }
-      point.a = 255;
-      if (object >= 0) {
-        point.label = DEPTH_FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (object);
-        ++scene.objects[object].num_points;
-      }
+  const auto intersect = [&] (const Eigen::Vector3d& direction, RayHit& hit) {
+    double t = std::numeric_limits<double>::infinity();
+    if (direction.z() < 0.0) {
+      const double t_table = -camera.z() / direction.z();
+      const Eigen::Vector3d p = camera + t_table * direction;
+      if (std::abs (p.x()) <= half_width && std::abs (p.y()) <= half_depth)
+        t = t_table;
     }
+    hit.solid = traceObjects (solids, camera, direction, t);
+    if (!std::isfinite (t))
+      return false;
+    hit.point = camera + t * direction;
+    hit.normal = hit.solid < 0 ? Eigen::Vector3d (Eigen::Vector3d::UnitZ())
+                               : solids[hit.solid].normal (hit.point);
+    if (!parameters.projector_shadows)
+      return true;
+    const ShadowRay shadow = shadowRay (hit, projector);
+    double t_shadow = shadow.length;
+    return traceObjects (solids, shadow.origin, shadow.direction, t_shadow) < 0;
+  };
+  const auto measure = [&] (const DepthPixel& pixel) {
+    const int object = pixel.hit.solid;
+    if (object < 0) {
+      ++scene.num_table_points;
+      if (parameters.remove_table)
+        return;
+    }
+    pcl::PointXYZRGBL& point = (*scene.cloud) (pixel.u, pixel.v);
+    point.getVector3fMap() = pixel.measured.cast<float>();
+    const std::size_t slot =
+        object < 0 ? 0
+                   : first_slot[object] + tones[object].partOf (solids[object],
+                                                                pixel.hit.point,
+                                                                pixel.hit.normal);
+    pixel_slots[pixel.v * parameters.width + pixel.u] = slot;
+    point.r = shade (slots[slot].r, pixel.cos_incidence);
+    point.g = shade (slots[slot].g, pixel.cos_incidence);
+    point.b = shade (slots[slot].b, pixel.cos_incidence);
+    if (parameters.colour_noise > 0.0f)
+      addColourNoise (point, parameters.colour_noise, colour_random);
+    point.a = 255;
+    if (object >= 0) {
+      point.label = DEPTH_FIRST_OBJECT_LABEL + static_cast<std::uint32_t> (object);
+      ++scene.objects[object].num_points;
+    }
+  };
+  castDepthRays (sensor, pose, fullFrame (sensor), random, intersect, measure);
 
   // Regions: the slots with points, labelled in slot order.
   for (const std::size_t slot : pixel_slots)
