@@ -87,30 +87,30 @@ cloudSize (const std::vector<Point3d>& points)
   return 2.0 * std::sqrt (squares / static_cast<double> (points.size()));
 }
 
-std::vector<Point3d>
-hashedSample (const std::vector<Point3d>& points, std::size_t count)
+std::vector<std::size_t>
+hashedSample (std::size_t size, std::size_t count)
 {
-  if (points.size() <= count)
-    return points;
-  // SplitMix64's finalizer on the coordinates' bits.
+  std::vector<std::size_t> chosen (size);
+  for (std::size_t i = 0; i < size; ++i)
+    chosen[i] = i;
+  if (size <= count)
+    return chosen;
+  // SplitMix64's finalizer on the position.
   const auto mix = [] (std::uint64_t x) {
+    x += 0x9e3779b97f4a7c15ULL;
     x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
     x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
     return x ^ (x >> 31);
   };
-  std::vector<std::pair<std::uint64_t, std::size_t>> keys (points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-    keys[i] = {mix (i + 0x9e3779b97f4a7c15ULL), i};
-  std::nth_element (keys.begin(), keys.begin() + count, keys.end());
-  std::vector<std::size_t> chosen (count);
-  for (std::size_t i = 0; i < count; ++i)
-    chosen[i] = keys[i].second;
+  std::nth_element (chosen.begin(),
+                    chosen.begin() + static_cast<std::ptrdiff_t> (count),
+                    chosen.end(),
+                    [&mix] (std::size_t a, std::size_t b) {
+                      return std::make_pair (mix (a), a) < std::make_pair (mix (b), b);
+                    });
+  chosen.resize (count);
   std::sort (chosen.begin(), chosen.end());
-  std::vector<Point3d> sample;
-  sample.reserve (count);
-  for (const std::size_t i : chosen)
-    sample.push_back (points[i]);
-  return sample;
+  return chosen;
 }
 
 std::vector<Point3d>

@@ -51,12 +51,13 @@ pairingVector (const FilteredComplex& complex,
 double
 cloudSize (const std::vector<Point3d>& points);
 
-/** \brief \a count points of a cloud (all of them when it has no more), chosen by
- * a hash of their positions in \a points: a uniform random sample. Given the points
- * in a canonical order, it is the same for any input order, and for a moved or
- * scaled copy of the cloud. \return the sample, in the order of \a points */
-std::vector<Point3d>
-hashedSample (const std::vector<Point3d>& points, std::size_t count);
+/** \brief \a count of the positions 0..size-1 (all of them when there are no
+ * more), chosen by a hash of the position: a uniform random sample of a cloud of
+ * \a size points. Given the points in a canonical order, it is the same for any
+ * input order, and for a moved or scaled copy of the cloud.
+ * \return the chosen positions, increasing */
+std::vector<std::size_t>
+hashedSample (std::size_t size, std::size_t count);
 
 /** \brief A coarse copy of a cloud: the points of \a points (taken in the given
  * order) that are at least \a spacing from every point kept before them. No two of

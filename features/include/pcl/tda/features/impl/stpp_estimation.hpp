@@ -62,8 +62,10 @@ STPPEstimation<PointInT, PointOutT>::computeSignature (float* histogram)
     all_points.push_back ({p.x, p.y, p.z});
   }
   cloud_size_ = cloudSize (all_points);
-  const std::vector<Point3d> points =
-      max_points_ > 0 ? hashedSample (all_points, max_points_) : all_points;
+  std::vector<Point3d> points;
+  for (const std::size_t i : hashedSample (
+           all_points.size(), max_points_ > 0 ? max_points_ : all_points.size()))
+    points.push_back (all_points[i]);
   double spacing = 0.0;
   if (radius_ == 0.0) {
     pcl::PointCloud<pcl::PointXYZ> cloud;
