@@ -127,8 +127,11 @@ coarseCopy (const std::vector<Point3d>& points, double spacing)
   const auto hash = [] (const Cell& c) {
     return std::hash<long>() (c[0] * 73856093L ^ c[1] * 19349663L ^ c[2] * 83492791L);
   };
-  std::unordered_map<Cell, std::vector<std::size_t>, decltype (hash)> kept_by_cell (
+  // The first kept point of each cell, and the next kept point in its cell.
+  std::unordered_map<Cell, std::size_t, decltype (hash)> first_in_cell (
       points.size() / 4 + 1, hash);
+  std::vector<std::size_t> next_in_cell;
+  constexpr std::size_t NONE = std::numeric_limits<std::size_t>::max();
   std::vector<Point3d> kept;
   for (const Point3d& p : points) {
     const Cell cell = cellOf (p);
@@ -137,13 +140,18 @@ coarseCopy (const std::vector<Point3d>& points, double spacing)
       for (long dy = -1; dy <= 1 && !covered; ++dy)
         for (long dz = -1; dz <= 1 && !covered; ++dz) {
           const auto found =
-              kept_by_cell.find ({cell[0] + dx, cell[1] + dy, cell[2] + dz});
-          if (found != kept_by_cell.end())
-            for (const std::size_t k : found->second)
-              covered = covered || distance (kept[k], p) < spacing;
+              first_in_cell.find ({cell[0] + dx, cell[1] + dy, cell[2] + dz});
+          if (found == first_in_cell.end())
+            continue;
+          for (std::size_t k = found->second; k != NONE && !covered;
+               k = next_in_cell[k])
+            covered = distance (kept[k], p) < spacing;
         }
     if (!covered) {
-      kept_by_cell[cell].push_back (kept.size());
+      const auto inserted = first_in_cell.emplace (cell, kept.size());
+      next_in_cell.push_back (inserted.second ? NONE : inserted.first->second);
+      if (!inserted.second)
+        inserted.first->second = kept.size();
       kept.push_back (p);
     }
   }

@@ -14,7 +14,7 @@ namespace tda {
 
 /** \brief Levels of the STPP signature: the input cloud at its own radius, then
  * coarser copies of it (see STPPEstimation). */
-constexpr std::size_t STPP_LEVELS = 5;
+constexpr std::size_t STPP_LEVELS = 4;
 /** \brief Radii at which the Betti curves of one level are sampled. */
 constexpr std::size_t STPP_CURVE_SAMPLES = 8;
 /** \brief Values per level in the Betti-0 part: the curve and the count of

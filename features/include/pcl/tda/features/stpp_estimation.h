@@ -24,13 +24,14 @@ namespace tda {
  * from cloud to cloud and a classifier cannot take it as it is. compute() gives a
  * fixed-length signature (STPPSignature) made from the same pairs, at STPP_LEVELS
  * scales:
- * - level 0: the cloud itself (or a sample of setMaxPoints() points of it) at the
+ * - level 0: the cloud itself (or a uniform sample of setMaxPoints() points of
+ *   it, hashedSample()) at the
  *   radius r_0 (setRadius(), or AUTO_RADIUS_PER_SPACING times its surface
  *   spacing: the scale of its sampling);
  * - levels 1 to STPP_LEVELS - 1: coarse copies of the cloud
  *   (coarseCopy(), spacing r_k / COARSE_RADIUS_PER_SPACING, each from the one
- *   before, the first from all points) at the radii r_k = S / 16,
- *   S / 8, S / 4, S / 2, S the size of the cloud (cloudSize()): the scales of the
+ *   before, the first from all points) at the radii r_k = S / 8,
+ *   S / 4, S / 2, S the size of the cloud (cloudSize()): the scales of the
  *   object's own parts, handles and holes.
  *
  * Each level gives the Betti curves of its complex, sampled at STPP_CURVE_SAMPLES
@@ -65,7 +66,7 @@ public:
   static constexpr double AUTO_RADIUS_PER_SPACING = 2.0;
   /** \brief The radii of the coarse levels as fractions of the cloud's size. */
   static constexpr std::array<double, STPP_LEVELS - 1> COARSE_RADII_PER_SIZE{
-      1.0 / 16.0, 1.0 / 8.0, 1.0 / 4.0, 1.0 / 2.0};
+      1.0 / 8.0, 1.0 / 4.0, 1.0 / 2.0};
   /** \brief The radius of a coarse level in units of the spacing of its coarse
    * copy: its surface is filled with triangles early, and a hole lives for most of
    * [0, r]. */
@@ -94,8 +95,9 @@ public:
   }
 
   /** \brief Sets the most points level 0 is built on: a larger cloud is replaced
-   * by a sample of this many (hashedSample()). 0: all points, the thesis' STPP (slower
-   * on large clouds: the complex grows with the points). Default DEFAULT_MAX_POINTS. */
+   * by a uniform sample of this many (hashedSample()). 0: all points, the thesis'
+   * STPP (slower on large clouds: the complex grows with the points). Default
+   * DEFAULT_MAX_POINTS. */
   void
   setMaxPoints (std::size_t points)
   {
@@ -152,8 +154,8 @@ public:
     return memory_limit_;
   }
 
-  /** \brief Sets the number of OpenMP threads of the complex builder (0: OpenMP's
-   * default). The results do not depend on it. */
+  /** \brief Sets the number of OpenMP threads (0: OpenMP's default): the levels
+   * are computed in parallel. The results do not depend on it. */
   void
   setNumberOfThreads (unsigned int threads)
   {

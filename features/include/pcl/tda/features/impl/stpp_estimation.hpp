@@ -3,6 +3,7 @@
 #include <pcl/tda/features/stpp_estimation.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/point_spacing.h>
+#include <pcl/tda/search/radius_edges.h>
 
 #include <cmath>
 
@@ -88,22 +89,31 @@ STPPEstimation<PointInT, PointOutT>::computeSignature (float* histogram)
   for (const double fraction : COARSE_RADII_PER_SIZE)
     level_radii_.push_back (fraction * cloud_size_);
 
-  // Each coarse copy is made from the one before (the first from all points): its
-  // spacing doubles at each level.
-  std::vector<Point3d> coarse = all_points;
+  // Each coarse copy is made from the one before (the first from all points, as a
+  // sample has gaps the cloud does not have): its spacing doubles at each level.
+  std::vector<std::vector<Point3d>> level_points (STPP_LEVELS);
+  level_points[0] = std::move (points);
+  for (std::size_t level = 1; level < STPP_LEVELS; ++level)
+    level_points[level] = coarseCopy (level == 1 ? all_points : level_points[level - 1],
+                                      level_radii_[level] / COARSE_RADIUS_PER_SPACING);
+
+  // The levels are independent: one thread each.
+  std::vector<FilteredComplex> complexes (STPP_LEVELS);
+  std::vector<PersistenceResult> results (STPP_LEVELS);
+  std::vector<std::uint8_t> built (STPP_LEVELS, 0);
+#pragma omp parallel for schedule(dynamic, 1) num_threads(resolveThreads(threads_))
+  for (std::size_t level = 0; level < STPP_LEVELS; ++level)
+    built[level] = levelPersistence (level_points[level],
+                                     level_radii_[level],
+                                     homology_,
+                                     memory_limit_,
+                                     1,
+                                     complexes[level],
+                                     results[level]);
+
   for (std::size_t level = 0; level < STPP_LEVELS; ++level) {
     const double radius = level_radii_[level];
-    if (level > 0)
-      coarse = coarseCopy (coarse, radius / COARSE_RADIUS_PER_SPACING);
-    FilteredComplex complex;
-    PersistenceResult result;
-    if (!levelPersistence (level == 0 ? points : coarse,
-                           radius,
-                           homology_,
-                           memory_limit_,
-                           threads_,
-                           complex,
-                           result)) {
+    if (!built[level]) {
       PCL_ERROR ("[pcl::tda::%s::compute] Cannot build the complex of level %zu, "
                  "radius %g (see above).\n",
                  getClassName().c_str(),
@@ -116,23 +126,22 @@ STPPEstimation<PointInT, PointOutT>::computeSignature (float* histogram)
     const double curve_start =
         level == 0 ? 0.0 : 2.0 * radius / COARSE_RADIUS_PER_SPACING;
     if (homology_ != STPPHomology::BETTI_1)
-      betti0LevelValues (complex,
-                         result,
+      betti0LevelValues (complexes[level],
+                         results[level],
                          curve_start,
                          radius,
                          histogram + STPP_BETTI0_OFFSET +
                              level * STPP_BETTI0_PER_LEVEL);
     if (homology_ != STPPHomology::BETTI_0)
-      betti1LevelValues (complex,
-                         result,
+      betti1LevelValues (complexes[level],
+                         results[level],
                          curve_start,
                          radius,
                          histogram + STPP_BETTI1_OFFSET +
                              level * STPP_BETTI1_PER_LEVEL);
-    if (level == 0)
-      pairing_vector_ = pairingVector (complex, result, homology_);
-    level_diagrams_.push_back (result.diagram (complex));
+    level_diagrams_.push_back (results[level].diagram (complexes[level]));
   }
+  pairing_vector_ = pairingVector (complexes[0], results[0], homology_);
   histogram[STPP_SIZE_OFFSET] =
       scale_invariant_ ? 0.0f : static_cast<float> (std::log10 (cloud_size_));
   return true;
