@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -44,6 +45,16 @@ temporaryPath (const std::string& prefix, const std::string& name)
 {
   return testing::TempDir() + prefix + "_" +
          testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
+}
+
+/** A fresh, empty folder of its own for the running test. */
+inline std::string
+temporaryFolder (const std::string& prefix)
+{
+  const std::string folder = temporaryPath (prefix, "files");
+  std::filesystem::remove_all (folder);
+  std::filesystem::create_directories (folder);
+  return folder;
 }
 
 inline bool

@@ -1,15 +1,13 @@
 #include <pcl/common/centroid.h>
 #include <pcl/common/point_tests.h>
-#include <pcl/io/png_io.h>
 #include <pcl/tda/apps/cloud_picture.h>
-#include <pcl/tda/common/atomic_file.h>
+#include <pcl/tda/apps/rgb_image.h>
 #include <pcl/exceptions.h>
 
 #include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <vector>
 
@@ -21,22 +19,6 @@ namespace {
  * one row or column is organized for PCL, but no image). */
 constexpr std::size_t MIN_IMAGE_SIDE = 16;
 
-/** An RGB picture, row by row. */
-struct Picture {
-  std::size_t width = 0, height = 0;
-  std::vector<std::uint8_t> rgb;
-
-  Picture (std::size_t w, std::size_t h, std::uint8_t background)
-  : width (w), height (h), rgb (3 * w * h, background)
-  {}
-
-  void
-  set (std::size_t x, std::size_t y, const std::array<std::uint8_t, 3>& color)
-  {
-    std::copy (color.begin(), color.end(), rgb.begin() + 3 * (y * width + x));
-  }
-};
-
 /** The colour a point is drawn in. */
 std::array<std::uint8_t, 3>
 colorOf (const pcl::PointXYZRGBL& point, PictureColors colors)
@@ -47,12 +29,12 @@ colorOf (const pcl::PointXYZRGBL& point, PictureColors colors)
 }
 
 /** An organized cloud pixel by pixel, each pixel a square of \a scale pixels. */
-Picture
+RGBImage
 drawOrganized (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud, PictureColors colors)
 {
   const std::size_t scale = std::max<std::size_t> (
       1, std::min ((640 + cloud.width - 1) / cloud.width, 1280 / cloud.height));
-  Picture picture (cloud.width * scale, cloud.height * scale, 0);
+  RGBImage picture (cloud.width * scale, cloud.height * scale, {0, 0, 0});
   for (std::size_t v = 0; v < cloud.height; ++v)
     for (std::size_t u = 0; u < cloud.width; ++u) {
       const pcl::PointXYZRGBL& point = cloud.at (u, v);
@@ -67,7 +49,7 @@ drawOrganized (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud, PictureColors co
 }
 
 /** Any cloud, orthographically along its smallest principal axis. */
-Picture
+RGBImage
 drawProjected (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
                PictureColors colors,
                std::size_t width)
@@ -110,7 +92,7 @@ drawProjected (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
   const float pixel = extent / static_cast<float> (width - 1);
   const auto height = std::max<std::size_t> (
       1, static_cast<std::size_t> (std::ceil ((max_y - min_y) / pixel)) + 1);
-  Picture picture (width, height, 255);
+  RGBImage picture (width, height, {255, 255, 255});
   std::vector<float> depth (width * height, std::numeric_limits<float>::max());
   const int splat = static_cast<int> (std::max<std::size_t> (1, width / 400));
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -164,31 +146,20 @@ saveCloudPicture (const std::string& path,
 {
   // The panels side by side, 8 pixels apart, each drawn the same way.
   constexpr std::size_t GAP = 8;
-  std::vector<Picture> drawn;
+  std::vector<RGBImage> drawn;
   for (const PictureColors colors : panels)
     drawn.push_back (cloud.width >= MIN_IMAGE_SIDE && cloud.height >= MIN_IMAGE_SIDE
                          ? drawOrganized (cloud, colors)
                          : drawProjected (cloud, colors, width));
   if (drawn.empty())
     PCL_THROW_EXCEPTION (pcl::BadArgumentException, "A picture needs a panel.");
-  const std::size_t panel_width = drawn.front().width;
-  Picture picture (drawn.size() * (panel_width + GAP) - GAP, drawn.front().height, 255);
+  const std::size_t panel_width = drawn.front().width();
+  RGBImage picture (drawn.size() * (panel_width + GAP) - GAP,
+                    drawn.front().height(),
+                    {255, 255, 255});
   for (std::size_t k = 0; k < drawn.size(); ++k)
-    for (std::size_t y = 0; y < picture.height; ++y)
-      std::copy_n (drawn[k].rgb.begin() + 3 * y * panel_width,
-                   3 * panel_width,
-                   picture.rgb.begin() +
-                       3 * (y * picture.width + k * (panel_width + GAP)));
-  replaceFileAtomically (path, [&picture] (const std::string& temporary) {
-    pcl::io::saveRgbPNGFile (temporary,
-                             picture.rgb.data(),
-                             static_cast<int> (picture.width),
-                             static_cast<int> (picture.height));
-    std::ifstream written (temporary, std::ios::binary);
-    char signature[4] = {};
-    written.read (signature, 4);
-    return written && signature[1] == 'P' && signature[2] == 'N' && signature[3] == 'G';
-  });
+    picture.paste (drawn[k], static_cast<long> (k * (panel_width + GAP)), 0);
+  picture.savePNG (path);
 }
 
 } // namespace tda

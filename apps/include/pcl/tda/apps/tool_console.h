@@ -91,9 +91,10 @@ private:
 };
 
 /** \brief The main() of a tool: "-h" or "--help" prints the help only and exits
- * with 0, fewer than two arguments print it and exit with 1; else prints \a intro,
- * reads the options with \a parse and returns the exit code of \a run. A refusal
- * (a pcl::PCLException thrown by either) prints its message and exits with 1. */
+ * with 0, fewer than \a least_arguments arguments print it and exit with 1; else
+ * prints \a intro, reads the options with \a parse and returns the exit code of
+ * \a run. A refusal (a pcl::PCLException thrown by either) prints its message and
+ * exits with 1. */
 template <typename Options>
 int
 runTool (int argc,
@@ -101,7 +102,8 @@ runTool (int argc,
          const std::string& intro,
          void (*print_help) (const char* program),
          void (*parse) (int argc, char** argv, Options& options),
-         int (*run) (const Options& options, ToolConsole& console))
+         int (*run) (const Options& options, ToolConsole& console),
+         int least_arguments = 2)
 {
   if (helpRequested (argc, argv)) {
     print_help (argv[0]);
@@ -109,7 +111,7 @@ runTool (int argc,
   }
   pcl::console::print_info (
       "%s For more information, use: %s -h\n", intro.c_str(), argv[0]);
-  if (argc < 3) {
+  if (argc < least_arguments + 1) {
     print_help (argv[0]);
     return 1;
   }

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief Splits one line of a CSV file into its fields, RFC 4180 style: fields are
+ * separated by commas, a field in double quotes may hold commas, and "" in it
+ * stands for one quote. A carriage return at the end of the line is dropped; spaces
+ * are kept.
+ * \throws pcl::BadArgumentException on a quote that is not closed, or text after a
+ * closing quote */
+std::vector<std::string>
+splitCSVLine (const std::string& line);
+
+/** \brief \a text as a CSV field: as it is, or in double quotes (quotes doubled)
+ * when it holds a comma, a quote or a line break, so that splitCSVLine() gives it
+ * back. */
+std::string
+csvField (const std::string& text);
+
+} // namespace tda
+} // namespace pcl
