@@ -13,6 +13,7 @@
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/apps/view_descriptors.h>
+#include <pcl/tda/apps/view_files.h>
 #include <pcl/tda/apps/view_manifest.h>
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/error_message.h>
@@ -134,18 +135,9 @@ parseOptions (int argc, char** argv, Options& options)
                          "-confusion has no use without -svg or -png.");
 }
 
-/** The seed of a view's ESF sampling: FNV-1a of its path in the manifest, so that
- * it does not depend on the order of the views or on the threads. */
-std::uint64_t
-viewSeed (const std::string& path)
-{
-  std::uint64_t hash = 14695981039346656037ULL;
-  for (const char c : path)
-    hash = (hash ^ static_cast<unsigned char> (c)) * 1099511628211ULL;
-  return hash;
-}
-
-/** The descriptors \a names of every view, computed in parallel.
+/** The descriptors \a names of every view, computed in parallel; ESF is seeded by
+ * the view's path in the manifest, so that it does not depend on the order of the
+ * views or on the threads.
  * \return false, with the reason printed, when a view cannot be read */
 bool
 computeDescriptors (const pcl::tda::ViewManifest& manifest,
@@ -153,40 +145,23 @@ computeDescriptors (const pcl::tda::ViewManifest& manifest,
                     pcl::tda::ToolConsole& console,
                     std::vector<std::vector<pcl::tda::ViewDescriptor>>& computed)
 {
-  const std::size_t views = manifest.views.size();
-  computed.assign (views, {});
-  std::vector<std::string> errors (views);
-  // PCL's classes report their failures on the console, from all threads at once:
-  // they are collected per view instead.
-  const VERBOSITY_LEVEL verbosity = getVerbosityLevel();
-  setVerbosityLevel (L_ALWAYS);
-  {
-    pcl::tda::ProgressBar bar ("  views");
-    const pcl::tda::ProgressCallback report =
-        [&bar] (std::size_t done, std::size_t total) { bar.update (done, total); };
-    pcl::tda::ParallelProgress progress (report, views);
-#pragma omp parallel for schedule(dynamic)
-    for (std::size_t i = 0; i < views; ++i) {
-      try {
-        pcl::PointCloud<pcl::PointXYZRGB> cloud; // colour for "covariance"
-        pcl::tda::loadPointCloudFile (manifest.views[i].file, cloud);
-        computed[i] = pcl::tda::computeViewDescriptors (
-            cloud, names, viewSeed (manifest.views[i].path));
-      }
-      catch (const std::exception& error) {
-        errors[i] = pcl::tda::errorMessage (error);
-      }
-      progress.advance (1);
-    }
+  std::vector<std::string> files, paths;
+  for (const auto& view : manifest.views) {
+    files.push_back (view.file);
+    paths.push_back (view.path);
   }
-  setVerbosityLevel (verbosity);
-  for (std::size_t i = 0; i < views; ++i)
-    if (!errors[i].empty()) {
+  std::vector<pcl::tda::DescribedFile> described =
+      pcl::tda::describeViewFiles (files, paths, names, 0.0, "  views");
+  computed.clear();
+  for (std::size_t i = 0; i < described.size(); ++i) {
+    if (!described[i].error.empty()) {
       console.error ("Cannot read the view " + manifest.views[i].path +
                      " (manifest line " + std::to_string (manifest.views[i].line) +
-                     "): " + errors[i]);
+                     "): " + described[i].error);
       return false;
     }
+    computed.push_back (std::move (described[i].descriptors));
+  }
   return true;
 }
 

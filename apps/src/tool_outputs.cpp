@@ -51,15 +51,21 @@ checkWritable (const std::string& path)
 } // namespace
 
 ToolOutputs::ToolOutputs (const std::string& input, const std::vector<Output>& outputs)
+: ToolOutputs (std::vector<std::string>{input}, outputs)
+{}
+
+ToolOutputs::ToolOutputs (const std::vector<std::string>& inputs,
+                          const std::vector<Output>& outputs)
 {
   std::vector<const Output*> checked;
   for (const Output& output : outputs) {
     if (output.path.empty())
       continue;
-    if (!input.empty() && sameTarget (output.path, input))
-      PCL_THROW_EXCEPTION (pcl::IOException,
-                           "refusing to overwrite the input file "
-                               << input << " (" << output.option << ")");
+    for (const std::string& input : inputs)
+      if (!input.empty() && sameTarget (output.path, input))
+        PCL_THROW_EXCEPTION (pcl::IOException,
+                             "refusing to overwrite the input file "
+                                 << input << " (" << output.option << ")");
     for (const Output* other : checked)
       if (sameTarget (output.path, other->path))
         PCL_THROW_EXCEPTION (pcl::IOException,

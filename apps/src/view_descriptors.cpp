@@ -57,6 +57,8 @@ struct ViewInput {
   /** Why the view has no normals, when it has none. */
   std::string normal_failure;
   std::uint64_t seed = 0;
+  /** The radius of STPP's level 0 and of the covariance's filtration (0: theirs). */
+  double topological_radius = 0.0;
 };
 
 [[noreturn]] void
@@ -189,6 +191,7 @@ stpp (const ViewInput& input, STPPHomology homology)
   STPPEstimation<pcl::PointXYZ, STPPSignature> estimation;
   estimation.setInputCloud (input.points);
   estimation.setHomology (homology);
+  estimation.setRadius (input.topological_radius);
   estimation.setNumberOfThreads (1); // the views are computed in parallel
   pcl::PointCloud<STPPSignature> output;
   estimation.compute (output);
@@ -204,6 +207,7 @@ covariance (const ViewInput& input)
       estimation;
   estimation.setInputCloud (input.colored_surface);
   estimation.setInputNormals (input.normals);
+  estimation.setRadius (input.topological_radius);
   estimation.setNumberOfThreads (1); // the views are computed in parallel
   pcl::PointCloud<CovarianceSignature> output;
   estimation.compute (output);
@@ -279,10 +283,12 @@ isViewDescriptor (const std::string& name)
 std::vector<ViewDescriptor>
 computeViewDescriptors (const pcl::PointCloud<pcl::PointXYZRGB>& view,
                         const std::vector<std::string>& names,
-                        std::uint64_t seed)
+                        std::uint64_t seed,
+                        double topological_radius)
 {
   ViewInput input;
   input.seed = seed;
+  input.topological_radius = topological_radius;
   input.colored_points.reset (new ColorCloud);
   for (const auto& point : view)
     if (pcl::isXYZFinite (point))

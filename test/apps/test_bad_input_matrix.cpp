@@ -139,6 +139,7 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
     expectRefusal ("segment", "bad.pcd out.pcd -radius 0.1 -plane 0", message);
     expectRefusal ("regions", "bad.pcd out.pcd -radius 0.1", message);
     expectRefusal ("holes", "bad.pcd out.pcd -radius 0.1", message);
+    expectRefusal ("stpp", "out.csv bad.pcd", message);
   }
   const std::vector<std::pair<std::string, std::string>> inputs{
       {"x.pcd", "x.pcd is a directory, not a PCD file"},
@@ -150,6 +151,7 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
     expectRefusal ("segment", input + " out.pcd -radius 0.1", message);
     expectRefusal ("regions", input + " out.pcd", message);
     expectRefusal ("holes", input + " out.pcd", message);
+    expectRefusal ("stpp", "out.csv " + input, message);
   }
   expectRefusal (
       "regions", "plain.pcd out.pcd", "plain.pcd has no colour (no rgb or rgba field)");

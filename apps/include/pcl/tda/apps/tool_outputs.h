@@ -28,6 +28,11 @@ public:
    * \throws pcl::IOException naming the file */
   ToolOutputs (const std::string& input, const std::vector<Output>& outputs);
 
+  /** \brief The same for a tool with several inputs: no output may be one of
+   * \a inputs. */
+  ToolOutputs (const std::vector<std::string>& inputs,
+               const std::vector<Output>& outputs);
+
   /** \brief The temporary file to write the new content of the output \a path to.
    * \throws pcl::BadArgumentException when \a path is no output */
   const std::string&

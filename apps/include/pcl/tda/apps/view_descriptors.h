@@ -58,12 +58,14 @@ isViewDescriptor (const std::string& name);
  * uses the colours. A descriptor that
  * cannot be computed (too few points, PCL gives no histogram or non-finite values)
  * gets its failure, the others are computed all the same. Deterministic: \a seed
- * seeds ESF's sampling.
+ * seeds ESF's sampling. \a topological_radius is the radius of STPP's level 0 and
+ * of the covariance descriptor's filtration (setRadius(); 0: chosen by them).
  * \throws pcl::BadArgumentException on an unknown name */
 std::vector<ViewDescriptor>
 computeViewDescriptors (const pcl::PointCloud<pcl::PointXYZRGB>& view,
                         const std::vector<std::string>& names,
-                        std::uint64_t seed);
+                        std::uint64_t seed,
+                        double topological_radius = 0.0);
 
 } // namespace tda
 } // namespace pcl
