@@ -49,6 +49,8 @@ static_assert (static_cast<float> (MAX_REMOVE) == pcl::tda::MAX_HOLE_REMOVAL_FRA
 
 /** The most instances per category and views per instance of shapes. */
 constexpr long MAX_INSTANCES = 1000, MAX_VIEWS = 1000;
+/** The largest perturbation -perturb accepts, in metres. */
+constexpr double MAX_PERTURB = 0.1;
 /** The largest noise multiplier -noise accepts for shapes. */
 constexpr double MAX_NOISE_MULTIPLIER = 100.0;
 /** The manifest of a data set of views, in its folder. */
@@ -153,6 +155,10 @@ printHelp (const char* program)
               pcl::tda::ObjectViewParameters().views);
   print_info ("    -categories C1,C2,.. = the categories, each once (default: "
               "all)\n");
+  print_info ("    -perturb A = moves every coordinate of every point by a uniform "
+              "amount in [-A, A]\n                 metres, 0 to %g (thesis Experiment "
+              "3: 0.0005, 0.001, 0.003; default 0)\n",
+              MAX_PERTURB);
   print_info ("  and for holes only:\n");
   print_info ("    -surface S = plane, sphere, cylinder, torus or heightfield "
               "(default plane)\n");
@@ -181,6 +187,7 @@ struct Options {
   std::string removed;
   // shapes only; instances and views 0 when not given
   long instances = 0, views = 0;
+  double perturb = 0.0;
   std::vector<pcl::tda::ObjectCategory> categories = pcl::tda::allObjectCategories();
 };
 
@@ -279,6 +286,8 @@ parseOptions (int argc, char** argv, Options& options)
       "-remove", options.remove, pcl::tda::NumberRange::atLeast (0.0, MAX_REMOVE));
   command_line.addText ("-removed", options.removed);
   command_line.addInteger ("-instances", options.instances, 1, MAX_INSTANCES);
+  command_line.addNumber (
+      "-perturb", options.perturb, pcl::tda::NumberRange::atLeast (0.0, MAX_PERTURB));
   command_line.addInteger ("-views", options.views, 1, MAX_VIEWS);
   std::string categories;
   command_line.addText ("-categories", categories);
@@ -308,7 +317,7 @@ parseOptions (int argc, char** argv, Options& options)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "Option -colour-noise applies to tabletop, regions, "
                          "depth-regions and shapes only.");
-  for (const char* option : {"-instances", "-views", "-categories"})
+  for (const char* option : {"-instances", "-views", "-categories", "-perturb"})
     if (command_line.given (option) && !shapes)
       PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                            "Option " << option << " applies to shapes only.");
@@ -569,6 +578,7 @@ runShapes (const Options& options, pcl::tda::ToolConsole& console)
   parameters.categories = options.categories;
   if (options.instances > 0)
     parameters.instances = static_cast<std::size_t> (options.instances);
+  parameters.perturbation = static_cast<float> (options.perturb);
   if (options.views > 0)
     parameters.views = static_cast<std::size_t> (options.views);
   if (options.noise >= 0.0)

@@ -296,6 +296,31 @@ TEST (ObjectViews, NoiseMultiplierScalesTheDepthNoise)
              residual[0]);
 }
 
+TEST (ObjectViews, PerturbationMovesEveryCoordinateWithinItsBound)
+{
+  ObjectViewParameters parameters;
+  parameters.seed = 5;
+  const auto plain = renderObjectView (parameters, ObjectCategory::BOX, 1, 2);
+  for (const float a : {0.0005f, 0.003f}) {
+    parameters.perturbation = a;
+    const auto moved = renderObjectView (parameters, ObjectCategory::BOX, 1, 2);
+    ASSERT_EQ (moved.cloud->size(), plain.cloud->size());
+    double largest = 0.0, sum_of_squares = 0.0;
+    for (std::size_t i = 0; i < plain.cloud->size(); ++i)
+      for (int axis = 0; axis < 3; ++axis) {
+        const double offset =
+            (*moved.cloud)[i].data[axis] - (*plain.cloud)[i].data[axis];
+        largest = std::max (largest, std::abs (offset));
+        sum_of_squares += offset * offset;
+      }
+    EXPECT_LE (largest, a * (1.0 + 1e-3));
+    // Uniform in [-a, a]: the standard deviation is a / sqrt(3).
+    const double sd = std::sqrt (sum_of_squares / (3.0 * plain.cloud->size()));
+    EXPECT_NEAR (sd, a / std::sqrt (3.0), 0.05 * a);
+    EXPECT_EQ ((*moved.cloud)[0].rgba, (*plain.cloud)[0].rgba);
+  }
+}
+
 TEST (ObjectViews, ARingSeenFromAboveShowsItsHole)
 {
   ObjectViewParameters parameters;
@@ -381,6 +406,9 @@ TEST (ObjectViews, InvalidParametersThrow)
       [] (ObjectViewParameters& p) { p.max_elevation_deg = 90.0f; },
       [] (ObjectViewParameters& p) { p.max_elevation_deg = std::nanf (""); },
       [] (ObjectViewParameters& p) { p.min_points = 0; },
+      [] (ObjectViewParameters& p) { p.perturbation = -0.001f; },
+      [] (ObjectViewParameters& p) { p.perturbation = 0.2f; },
+      [] (ObjectViewParameters& p) { p.perturbation = std::nanf (""); },
   };
   for (std::size_t i = 0; i < invalid.size(); ++i) {
     ObjectViewParameters p;

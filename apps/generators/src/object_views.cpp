@@ -41,6 +41,10 @@ constexpr double MIN_SATURATION = 0.35, MAX_SATURATION = 0.9;
 constexpr double MIN_VALUE = 0.45, MAX_VALUE = 0.95;
 /** Offset of the colour noise's seed from a view's seed. */
 constexpr std::uint64_t COLOUR_NOISE_SEED_OFFSET = 0x94d049bb133111ebULL;
+/** Offset of the perturbation's seed from a view's seed. */
+constexpr std::uint64_t PERTURBATION_SEED_OFFSET = 0xbf58476d1ce4e5b9ULL;
+/** The largest perturbation, in metres. */
+constexpr float MAX_PERTURBATION = 0.1f;
 
 /** SplitMix64's output function: a well-mixed 64-bit hash of \a x. */
 std::uint64_t
@@ -222,6 +226,13 @@ checkObjectViewParameters (const ObjectViewParameters& p)
   checkParameter (p.views >= 1, NAME, "the number of views must be >= 1");
   checkNonNegative (p.noise_multiplier, NAME, "noise multiplier");
   checkNonNegative (p.colour_noise, NAME, "colour noise");
+  checkNonNegative (p.perturbation, NAME, "perturbation");
+  checkParameter (p.perturbation <= MAX_PERTURBATION,
+                  NAME,
+                  "the perturbation must be at most ",
+                  MAX_PERTURBATION,
+                  " m, not ",
+                  p.perturbation);
   checkParameter (std::isfinite (p.min_distance) && p.min_distance >= LOWEST_DISTANCE,
                   NAME,
                   "the minimum distance must be at least ",
@@ -346,6 +357,13 @@ renderObjectView (const ObjectViewParameters& parameters,
                     " ",
                     instance,
                     "; bring the camera closer or ask for fewer points");
+  }
+  if (parameters.perturbation > 0.0f) {
+    PortableRandom perturbation_random (seed + PERTURBATION_SEED_OFFSET);
+    const double a = parameters.perturbation;
+    for (pcl::PointXYZRGB& point : cloud)
+      for (int axis = 0; axis < 3; ++axis)
+        point.data[axis] += static_cast<float> (perturbation_random.uniform (-a, a));
   }
   cloud.width = static_cast<std::uint32_t> (cloud.size());
   cloud.height = 1;

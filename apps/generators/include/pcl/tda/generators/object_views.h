@@ -125,6 +125,10 @@ struct ObjectViewParameters {
    * >= 0; drawn from a random generator of its own, so that the points do not
    * depend on it. */
   float colour_noise = 4.0f;
+  /** \brief Half-width, in metres, of a uniform perturbation of every coordinate
+   * of every point after the view is taken (thesis Experiment 3: 0.0005, 0.001 and
+   * 0.003), >= 0, at most 0.1; drawn from a random generator of its own. */
+  float perturbation = 0.0f;
   /** \brief Smallest distance from the camera to the object centre, in metres,
    * >= 0.3 (the camera stays outside every object). */
   float min_distance = 0.6f;
