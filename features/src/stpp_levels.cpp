@@ -211,6 +211,18 @@ betti1LevelValues (const FilteredComplex& complex,
   values[STPP_CURVE_SAMPLES + 1] = logCount (long_lived);
 }
 
+pcl::PointCloud<pcl::PointXYZ>::Ptr
+toPointCloud (const std::vector<Point3d>& points)
+{
+  const auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
+  cloud->reserve (points.size());
+  for (const Point3d& p : points)
+    cloud->push_back (pcl::PointXYZ (static_cast<float> (p[0]),
+                                     static_cast<float> (p[1]),
+                                     static_cast<float> (p[2])));
+  return cloud;
+}
+
 bool
 levelPersistence (const std::vector<Point3d>& points,
                   double radius,
@@ -220,14 +232,8 @@ levelPersistence (const std::vector<Point3d>& points,
                   FilteredComplex& complex,
                   PersistenceResult& result)
 {
-  const auto cloud = pcl::make_shared<pcl::PointCloud<pcl::PointXYZ>>();
-  cloud->reserve (points.size());
-  for (const Point3d& p : points)
-    cloud->push_back (pcl::PointXYZ (static_cast<float> (p[0]),
-                                     static_cast<float> (p[1]),
-                                     static_cast<float> (p[2])));
   VietorisRipsBuilder<pcl::PointXYZ> builder;
-  builder.setInputCloud (cloud);
+  builder.setInputCloud (toPointCloud (points));
   builder.setRadius (radius);
   builder.setMaxDimension (homology == STPPHomology::BETTI_0 ? 1 : 2);
   builder.setMemoryLimit (memory_limit);

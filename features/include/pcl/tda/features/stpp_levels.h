@@ -8,6 +8,8 @@
 #include <pcl/tda/common/persistence_result.h>
 #include <pcl/tda/common/point3d.h>
 #include <pcl/tda/features/signature_types.h>
+#include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -96,6 +98,10 @@ betti1LevelValues (const FilteredComplex& complex,
                    double curve_start,
                    double radius,
                    float* values);
+
+/** \brief \a points as a PCL cloud (single precision, as they were read). */
+pcl::PointCloud<pcl::PointXYZ>::Ptr
+toPointCloud (const std::vector<Point3d>& points);
 
 /** \brief The complex VR_r of \a points (edges, and triangles unless \a homology
  * is BETTI_0) and its persistence (H0, and H1 unless BETTI_0), built with the given

@@ -5,6 +5,7 @@
 #include <pcl/tda/common/persistence_engines.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/features/minimal_cycles.h>
+#include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 
 #include <algorithm>
@@ -22,13 +23,8 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
                getClassName().c_str());
     return false;
   }
-  if (!(radius_ >= 0.0) || !std::isfinite (radius_)) {
-    PCL_ERROR ("[pcl::tda::%s::compute] The radius must be positive and finite, or 0 "
-               "to choose it (got %g).\n",
-               getClassName().c_str(),
-               radius_);
+  if (!checkOptionalLength (radius_, getClassName(), "radius", "to choose it"))
     return false;
-  }
   if (!(max_tilt_degrees_ >= 0.0 && max_tilt_degrees_ <= 90.0)) {
     PCL_ERROR ("[pcl::tda::%s::compute] The max tilt angle must be in [0, 90] degrees "
                "(got %g).\n",
@@ -36,21 +32,10 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
                max_tilt_degrees_);
     return false;
   }
-  if (!(min_hole_radius_ >= 0.0) || !std::isfinite (min_hole_radius_)) {
-    PCL_ERROR ("[pcl::tda::%s::compute] The min hole radius must be positive and "
-               "finite, or 0 for the default (got %g).\n",
-               getClassName().c_str(),
-               min_hole_radius_);
-    return false;
-  }
-  if (!(band_width_ >= 0.0) || !std::isfinite (band_width_)) {
-    PCL_ERROR ("[pcl::tda::%s::compute] The rim band width must be positive and "
-               "finite, or 0 to choose it (got %g).\n",
-               getClassName().c_str(),
-               band_width_);
-    return false;
-  }
-  return true;
+  return checkOptionalLength (
+             min_hole_radius_, getClassName(), "min hole radius", "for the default") &&
+         checkOptionalLength (
+             band_width_, getClassName(), "rim band width", "to choose it");
 }
 
 template <typename PointInT, typename PointOutT>

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/features/stpp_estimation.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/point_spacing.h>
@@ -19,14 +20,7 @@ STPPEstimation<PointInT, PointOutT>::initCompute()
                getClassName().c_str());
     return false;
   }
-  if (!(radius_ >= 0.0) || !std::isfinite (radius_)) {
-    PCL_ERROR ("[pcl::tda::%s::compute] The radius must be positive and finite, or 0 "
-               "to choose it (got %g).\n",
-               getClassName().c_str(),
-               radius_);
-    return false;
-  }
-  return true;
+  return checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
 }
 
 template <typename PointInT, typename PointOutT>
@@ -67,15 +61,8 @@ STPPEstimation<PointInT, PointOutT>::computeSignature (float* histogram)
   for (const std::size_t i : hashedSample (
            all_points.size(), max_points_ > 0 ? max_points_ : all_points.size()))
     points.push_back (all_points[i]);
-  double spacing = 0.0;
-  if (radius_ == 0.0) {
-    pcl::PointCloud<pcl::PointXYZ> cloud;
-    for (const Point3d& p : points)
-      cloud.push_back (pcl::PointXYZ (static_cast<float> (p[0]),
-                                      static_cast<float> (p[1]),
-                                      static_cast<float> (p[2])));
-    spacing = surfaceSpacing (cloud, SPACING_SAMPLES);
-  }
+  const double spacing =
+      radius_ > 0.0 ? 0.0 : surfaceSpacing (*toPointCloud (points), SPACING_SAMPLES);
   if (!(cloud_size_ > 0.0) || (radius_ == 0.0 && !(spacing > 0.0))) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has too few distinct finite points "
                "(%zu finite of %zu indexed) to describe: at least %zu are needed.\n",

@@ -3,6 +3,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/tda/common/cielab.h>
 #include <pcl/tda/features/covariance_signature.h>
+#include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/features/stpp_levels.h>
 #include <pcl/tda/features/topological_covariance_estimation.h>
 #include <pcl/tda/search/canonical_order.h>
@@ -37,14 +38,7 @@ TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::initCompute()
                static_cast<std::size_t> (input_->size()));
     return false;
   }
-  if (!(radius_ >= 0.0) || !std::isfinite (radius_)) {
-    PCL_ERROR ("[pcl::tda::%s::compute] The radius must be positive and finite, or 0 "
-               "to choose it (got %g).\n",
-               getClassName().c_str(),
-               radius_);
-    return false;
-  }
-  return true;
+  return checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
 }
 
 template <typename PointInT, typename PointNT, typename PointOutT>
@@ -82,13 +76,11 @@ TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::computeSignature 
        hashedSample (usable.size(), max_points_ > 0 ? max_points_ : usable.size()))
     used.push_back (usable[i]);
   std::vector<Point3d> points;
-  pcl::PointCloud<pcl::PointXYZ> cloud;
   for (const pcl::index_t index : used) {
     const PointInT& p = (*input_)[index];
     points.push_back ({p.x, p.y, p.z});
-    cloud.push_back (pcl::PointXYZ (p.x, p.y, p.z));
   }
-  const double spacing = radius_ > 0.0 ? 0.0 : surfaceSpacing (cloud);
+  const double spacing = radius_ > 0.0 ? 0.0 : surfaceSpacing (*toPointCloud (points));
   if (points.size() < 2 || (radius_ == 0.0 && !(spacing > 0.0))) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has too few distinct points with a "
                "finite position and normal (%zu of %zu indexed) to describe: at "
