@@ -3,10 +3,10 @@
 
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
-#include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
+#include <pcl/tda/apps/voxel_grid_filter.h>
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>

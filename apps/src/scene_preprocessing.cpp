@@ -1,9 +1,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/filters/extract_indices.h>
-#include <pcl/filters/voxel_grid.h>
 #include <pcl/segmentation/sac_segmentation.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
-#include <pcl/tda/apps/voxel_grid_check.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/exceptions.h>
 
@@ -95,26 +93,6 @@ preprocessScene (const pcl::PointCloud<PointT>& cloud,
   return result;
 }
 
-template <typename PointT>
-typename pcl::PointCloud<PointT>::Ptr
-voxelGridFilter (const typename pcl::PointCloud<PointT>::ConstPtr& cloud, double leaf)
-{
-  checkVoxelGridLeaf (*cloud, leaf); // PCL's grid ignores a leaf that is too small
-  pcl::VoxelGrid<PointT> grid;
-  grid.setInputCloud (cloud);
-  const auto size = static_cast<float> (leaf);
-  grid.setLeafSize (size, size, size);
-  typename pcl::PointCloud<PointT>::Ptr filtered (new pcl::PointCloud<PointT>);
-  grid.filter (*filtered);
-  return filtered;
-}
-
-template pcl::PointCloud<pcl::PointXYZ>::Ptr
-voxelGridFilter<pcl::PointXYZ> (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr&,
-                                double);
-template pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
-voxelGridFilter<pcl::PointXYZRGBL> (const pcl::PointCloud<pcl::PointXYZRGBL>::ConstPtr&,
-                                    double);
 template pcl::PointCloud<pcl::PointXYZ>::Ptr
 preprocessScene (const pcl::PointCloud<pcl::PointXYZ>&,
                  const ScenePreprocessing&,

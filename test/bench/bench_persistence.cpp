@@ -13,7 +13,7 @@
 #include <pcl/console/parse.h>
 #include <pcl/filters/filter.h>
 #include <pcl/io/pcd_io.h>
-#include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/apps/voxel_grid_filter.h>
 #include <pcl/tda/common/diagram_comparison.h>
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/common/error_message.h>

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <pcl/tda/apps/voxel_grid_filter.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
@@ -29,13 +30,6 @@ struct PreprocessingCounts {
   std::size_t plane = 0;
   std::size_t after_voxel_grid = 0;
 };
-
-/** \brief The centroids of the occupied cells of a voxel grid of leaf \a leaf
- * (pcl::VoxelGrid): the subsampling of the tools' -leaf options. Defined for
- * pcl::PointXYZ and pcl::PointXYZRGBL. */
-template <typename PointT>
-typename pcl::PointCloud<PointT>::Ptr
-voxelGridFilter (const typename pcl::PointCloud<PointT>::ConstPtr& cloud, double leaf);
 
 /** \brief Drops the non-finite points (organized frames have NaNs), then the points
  * beyond max_depth, then the dominant plane (pcl::SACSegmentation, RANSAC plane

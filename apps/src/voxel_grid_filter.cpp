@@ -1,0 +1,34 @@
+#include <pcl/filters/voxel_grid.h>
+#include <pcl/tda/apps/voxel_grid_check.h>
+#include <pcl/tda/apps/voxel_grid_filter.h>
+
+// Apart from scene_preprocessing.cpp: a tool that only grids its input
+// (pcl_tda_barcode) then does not load PCL's segmentation library and the libraries it
+// needs, which take most of a process' start-up.
+
+namespace pcl {
+namespace tda {
+
+template <typename PointT>
+typename pcl::PointCloud<PointT>::Ptr
+voxelGridFilter (const typename pcl::PointCloud<PointT>::ConstPtr& cloud, double leaf)
+{
+  checkVoxelGridLeaf (*cloud, leaf); // PCL's grid ignores a leaf that is too small
+  pcl::VoxelGrid<PointT> grid;
+  grid.setInputCloud (cloud);
+  const auto size = static_cast<float> (leaf);
+  grid.setLeafSize (size, size, size);
+  typename pcl::PointCloud<PointT>::Ptr filtered (new pcl::PointCloud<PointT>);
+  grid.filter (*filtered);
+  return filtered;
+}
+
+template pcl::PointCloud<pcl::PointXYZ>::Ptr
+voxelGridFilter<pcl::PointXYZ> (const pcl::PointCloud<pcl::PointXYZ>::ConstPtr&,
+                                double);
+template pcl::PointCloud<pcl::PointXYZRGBL>::Ptr
+voxelGridFilter<pcl::PointXYZRGBL> (const pcl::PointCloud<pcl::PointXYZRGBL>::ConstPtr&,
+                                    double);
+
+} // namespace tda
+} // namespace pcl
