@@ -1,6 +1,7 @@
 #include <pcl/tda/common/cohomology_persistence.h>
 #include <pcl/tda/common/cycle_set.h>
 #include <pcl/tda/common/edge_adjacency.h>
+#include <pcl/tda/common/large_vector.h>
 
 #include "triangle_deaths.h"
 
@@ -20,7 +21,7 @@ class CoboundaryEnumerator {
 public:
   explicit CoboundaryEnumerator (const FilteredComplex& complex)
   : complex_ (complex)
-  , block_offsets_ (complex.numEdges() + 1, 0)
+  , block_offsets_ (largeVector<std::uint64_t> (complex.numEdges() + 1, 0))
   , adjacency_ (buildEdgeAdjacency (complex.numVertices(), complex.edges()))
   , common_neighbors_ (complex.edges(), adjacency_)
   {
@@ -95,7 +96,8 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
   const std::size_t num_edges = complex.numEdges();
 
   // killed_edge[t]: the edge whose reduced coboundary has pivot t (owner of t).
-  std::vector<SimplexIndex> killed_edge (complex.numTriangles(), INVALID_SIMPLEX);
+  auto killed_edge =
+      largeVector<SimplexIndex> (complex.numTriangles(), INVALID_SIMPLEX);
   // Reduced coboundaries of the paired edges, filled when first needed: an apparent
   // pair's column is its coboundary, unchanged. Few edges need one.
   std::unordered_map<SimplexIndex, CycleSet> reduced;

@@ -1,4 +1,5 @@
 #include <pcl/tda/common/edge_adjacency.h>
+#include <pcl/tda/common/large_vector.h>
 
 namespace pcl {
 namespace tda {
@@ -9,7 +10,7 @@ buildEdgeAdjacency (std::size_t num_vertices,
                     const EdgeFilter& keep)
 {
   EdgeAdjacency adjacency;
-  adjacency.offsets.assign (num_vertices + 1, 0);
+  adjacency.offsets = largeVector<std::uint64_t> (num_vertices + 1, 0);
   for (SimplexIndex e = 0; e < edges.size(); ++e)
     if (!keep || keep (e)) {
       ++adjacency.offsets[edges[e].source + 1];
@@ -17,8 +18,8 @@ buildEdgeAdjacency (std::size_t num_vertices,
     }
   for (std::size_t v = 0; v < num_vertices; ++v)
     adjacency.offsets[v + 1] += adjacency.offsets[v];
-  adjacency.entries.resize (adjacency.offsets.back());
-  adjacency.positions.resize (edges.size());
+  adjacency.entries = largeVector<EdgeAdjacency::Entry> (adjacency.offsets.back());
+  adjacency.positions = largeVector<std::array<std::uint64_t, 2>> (edges.size());
   std::vector<std::uint64_t> next (adjacency.offsets.begin(),
                                    adjacency.offsets.end() - 1);
   for (SimplexIndex e = 0; e < edges.size(); ++e) {

@@ -1,4 +1,5 @@
 #include <pcl/tda/common/h0_persistence.h>
+#include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/common/union_find.h>
 
 #include <algorithm>
@@ -11,8 +12,8 @@ computeH0Persistence (const FilteredComplex& complex)
 {
   const std::size_t num_vertices = complex.numVertices();
   PersistenceResult result;
-  result.vertex_killer.assign (num_vertices, INVALID_SIMPLEX);
-  result.edge_positive.assign (complex.numEdges(), 1);
+  result.vertex_killer = largeVector<SimplexIndex> (num_vertices, INVALID_SIMPLEX);
+  result.edge_positive = largeVector<std::uint8_t> (complex.numEdges(), 1);
 
   UnionFind components (num_vertices);
   // The oldest (smallest) vertex of each component, stored at its representative.

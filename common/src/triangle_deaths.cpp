@@ -1,5 +1,7 @@
 #include "triangle_deaths.h"
 
+#include <pcl/tda/common/large_vector.h>
+
 namespace pcl {
 namespace tda {
 
@@ -8,8 +10,9 @@ addTriangleDeaths (const std::vector<SimplexIndex>& killed_edge,
                    PersistenceResult& result)
 {
   result.max_dimension = 1;
-  result.edge_killer.assign (result.edge_positive.size(), INVALID_SIMPLEX);
-  result.triangle_positive.assign (killed_edge.size(), 1);
+  result.edge_killer =
+      largeVector<SimplexIndex> (result.edge_positive.size(), INVALID_SIMPLEX);
+  result.triangle_positive = largeVector<std::uint8_t> (killed_edge.size(), 1);
   for (SimplexIndex t = 0; t < killed_edge.size(); ++t)
     if (killed_edge[t] != INVALID_SIMPLEX) {
       result.triangle_positive[t] = 0;

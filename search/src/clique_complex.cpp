@@ -1,3 +1,4 @@
+#include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/search/clique_complex.h>
 #include <pcl/tda/search/parallel_progress.h>
 #include <pcl/tda/search/radius_edges.h>
@@ -21,7 +22,7 @@ countTriangles (const std::vector<FilteredEdge>& edges,
                 unsigned int threads,
                 const ProgressCallback& progress)
 {
-  std::vector<std::uint64_t> offsets (edges.size() + 1, 0);
+  auto offsets = largeVector<std::uint64_t> (edges.size() + 1, 0);
   const auto m = static_cast<std::int64_t> (edges.size());
   ParallelProgress tracker (progress, edges.size());
 #pragma omp parallel num_threads(resolveThreads(threads))
@@ -47,7 +48,7 @@ fillTriangles (const std::vector<FilteredEdge>& edges,
                unsigned int threads,
                const ProgressCallback& progress)
 {
-  std::vector<FilteredTriangle> triangles (offsets.back());
+  auto triangles = largeVector<FilteredTriangle> (offsets.back());
   const auto m = static_cast<std::int64_t> (edges.size());
   ParallelProgress tracker (progress, edges.size());
 #pragma omp parallel num_threads(resolveThreads(threads))

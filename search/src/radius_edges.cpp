@@ -1,3 +1,4 @@
+#include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/search/radius_edges.h>
 
 #include <omp.h>
@@ -65,7 +66,7 @@ listEdgesBySearch (const std::vector<Point3d>& points,
                    const std::vector<std::uint64_t>& offsets,
                    unsigned int threads)
 {
-  std::vector<FilteredEdge> edges (offsets.back());
+  auto edges = largeVector<FilteredEdge> (offsets.back());
   const auto n = static_cast<std::int64_t> (points.size());
 #pragma omp parallel num_threads(resolveThreads(threads))
   {

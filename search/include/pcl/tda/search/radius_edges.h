@@ -1,6 +1,7 @@
 #pragma once
 
 #include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/common/point3d.h>
 #include <pcl/tda/search/parallel_progress.h>
 #include <pcl/tda/search/uniform_grid.h>
@@ -99,7 +100,7 @@ listRadiusEdges (const UniformGrid& grid,
                  unsigned int threads,
                  const ProgressCallback& progress = {})
 {
-  std::vector<FilteredEdge> edges (offsets.back());
+  auto edges = largeVector<FilteredEdge> (offsets.back());
   const auto num_cells = static_cast<std::int64_t> (grid.numCells());
   ParallelProgress tracker (progress, points.size());
 #pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
