@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates doc/benchmarks.md from the benchmarks, run on this machine now.
 # Usage: scripts/update_benchmarks.sh [build_dir]   (expects a Release build)
-# Takes about 45 minutes on 2 cores.
+# Takes about 75 minutes on 2 cores.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bin=${1:-build}/bin
@@ -19,46 +19,8 @@ table() {
   "$bin/pcl_tda_bench_barcode" "$@" "$runs" | grep '^|' | sed '1d'
 }
 
-# The radius at which the complex of the cloud (with the options after the degree)
-# has the given average vertex degree (2 edges / points), found by bisection.
-radius_for_degree() {
-  local input=$1 degree=$2
-  shift 2
-  "$bin/pcl_tda_bench_persistence" "$input" -find-radius "$degree" "$@" |
-    tail -1 | sed 's/.*"radius": \([^,]*\),.*/\1/'
-}
-
-# persistence SECTION ARGS...: runs pcl_tda_bench_persistence once with ARGS and
-# files the header and the row of each of its tables (end_to_end, h1, incremental)
-# under $rows/SECTION. Diagrams that differ (exit status 2) stay in the tables,
-# marked DIFFER; any other failure stops the script.
-persistence() {
-  local section=$1 output status=0
-  shift
-  mkdir -p "$rows/$section"
-  output=$("$bin/pcl_tda_bench_persistence" "$@" -runs "$persistence_runs") || status=$?
-  if [ "$status" -eq 2 ]; then
-    echo "update_benchmarks: diagrams differ: pcl_tda_bench_persistence $*" >&2
-  elif [ "$status" -ne 0 ]; then
-    echo "update_benchmarks: failed: pcl_tda_bench_persistence $*" >&2
-    return 1
-  fi
-  printf '%s\n' "$output" | awk -v dir="$rows/$section" '
-    /^### End to end/ { name = "end_to_end"; line = 0; next }
-    /^### H1 on the same complex/ { name = "h1"; line = 0; next }
-    /^### Incremental/ { name = "incremental"; line = 0; next }
-    /^###/ { name = ""; next }
-    name != "" && /^\|/ {
-      ++line
-      if (line <= 2) print > (dir "/" name ".header")
-      if (line == 3) print >> (dir "/" name ".rows")
-    }'
-}
-
-# rows_of SECTION TABLE: one header and the rows of that table.
-rows_of() {
-  cat "$rows/$1/$2.header" "$rows/$1/$2.rows"
-}
+# radius_for_degree, persistence and rows_of.
+source scripts/persistence_bench_functions.sh
 
 # Thesis Table 3.1 analogue: random subsamples of one scan, 60k and 100k points by
 # jittered copies, at average vertex degrees ~10 and ~20. GUDHI and all of PHAT's
@@ -148,6 +110,18 @@ done
   echo "essential H1 classes at that radius. Medians, min-max in brackets."
   echo
   rows_of scans incremental
+  echo
+  echo "## Persistence on real scans: the corpus"
+  echo
+  echo "In [benchmarks_real_scans.md](benchmarks_real_scans.md), written by"
+  echo "\`scripts/bench_real_scans.sh\` in this run: \`pcl_tda_bench_persistence\` on every"
+  echo "scan of ../shared/data at full size and as random subsamples, on the depth frames"
+  echo "after a voxel grid, and a scaling series to 2M points with its picture. See"
+  echo "doc/performance.md for where the time goes."
+  scripts/bench_real_scans.sh "${1:-build}" "$persistence_runs" || {
+    echo "update_benchmarks: failed: bench_real_scans.sh" >&2
+    exit 1
+  }
   echo
   echo "## PersistentEuclideanClusterExtraction vs pcl::EuclideanClusterExtraction"
   echo

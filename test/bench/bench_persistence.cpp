@@ -315,9 +315,10 @@ jsonString (const std::string& text)
 // Input
 
 /** Loads the finite points of the PCD file, applies the voxel grid and the
- * subsample (enlarged by jittered copies when more points are asked for). */
+ * subsample (enlarged by jittered copies when more points are asked for, which sets
+ * \a jittered). */
 Cloud::Ptr
-loadPoints (const Options& options, std::size_t& loaded)
+loadPoints (const Options& options, std::size_t& loaded, bool& jittered)
 {
   Cloud::Ptr cloud (new Cloud);
   if (pcl::io::loadPCDFile (options.input, *cloud) < 0)
@@ -337,7 +338,8 @@ loadPoints (const Options& options, std::size_t& loaded)
   std::mt19937_64 random (options.seed);
   const std::size_t original = cloud->size();
   const auto wanted = static_cast<std::size_t> (options.points);
-  if (wanted > original) {
+  jittered = wanted > original;
+  if (jittered) {
     pcl::PointXYZ low, high;
     pcl::getMinMax3D (*cloud, low, high);
     const double sigma = 1e-4 * (high.getVector3fMap() - low.getVector3fMap()).norm();
@@ -1168,10 +1170,12 @@ int
 benchmark (const Options& options, const std::string& self)
 {
   Results results;
-  const Cloud::Ptr cloud = loadPoints (options, results.points_read);
+  bool jittered = false;
+  const Cloud::Ptr cloud = loadPoints (options, results.points_read, jittered);
   results.points = cloud->size();
   results.name = options.input.substr (options.input.rfind ('/') + 1) +
-                 (options.leaf > 0.0 ? ", leaf " + formatDouble (options.leaf) : "");
+                 (options.leaf > 0.0 ? ", leaf " + formatDouble (options.leaf) : "") +
+                 (jittered ? ", jittered copies" : "");
   results.memory_loaded = peakMemory();
   const auto wants = [&] (const std::string& tool) {
     return options.tools.count (tool) > 0;
@@ -1294,8 +1298,9 @@ main (int argc, char** argv)
   }
   try {
     std::size_t loaded = 0;
+    bool jittered = false;
     if (options.find_degree > 0.0)
-      return findRadius (options, loadPoints (options, loaded));
+      return findRadius (options, loadPoints (options, loaded, jittered));
     return benchmark (options, argv[0]);
   }
   catch (const std::exception& error) {
