@@ -6,7 +6,8 @@
 #include "triangle_deaths.h"
 
 #include <algorithm>
-#include <unordered_map>
+#include <cstdint>
+#include <utility>
 
 namespace pcl {
 namespace tda {
@@ -85,6 +86,47 @@ private:
   CommonNeighborSearch common_neighbors_;
 };
 
+/** The columns the reduction keeps for later additions, one after another in one
+ * array: the reduced column of a paired edge, or the coboundary of an apparent
+ * pair's edge once some column needs it. A column is stored once and never
+ * changes, so one array and an index per edge replace a map of vectors (tens of
+ * thousands of allocations on a real scan). */
+class StoredColumns {
+public:
+  explicit StoredColumns (std::size_t num_edges)
+  : slot_ (largeVector<std::uint32_t> (num_edges, NONE))
+  {}
+
+  bool
+  has (SimplexIndex edge) const
+  {
+    return slot_[edge] != NONE;
+  }
+
+  void
+  store (SimplexIndex edge, const CycleSet& column)
+  {
+    slot_[edge] = static_cast<std::uint32_t> (bounds_.size() - 1);
+    entries_.insert (entries_.end(), column.begin(), column.end());
+    bounds_.push_back (entries_.size());
+  }
+
+  /** The stored column of \a edge as [first, last). */
+  std::pair<const SimplexIndex*, const SimplexIndex*>
+  column (SimplexIndex edge) const
+  {
+    const std::uint32_t slot = slot_[edge];
+    return {entries_.data() + bounds_[slot], entries_.data() + bounds_[slot + 1]};
+  }
+
+private:
+  static constexpr std::uint32_t NONE = 0xffffffffu;
+  std::vector<std::uint32_t> slot_; // per edge: its column's slot, or NONE
+  // Column k is entries_[bounds_[k], bounds_[k + 1]).
+  std::vector<std::size_t> bounds_ = {0};
+  std::vector<SimplexIndex> entries_;
+};
+
 } // namespace
 
 void
@@ -98,10 +140,10 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
   // killed_edge[t]: the edge whose reduced coboundary has pivot t (owner of t).
   auto killed_edge =
       largeVector<SimplexIndex> (complex.numTriangles(), INVALID_SIMPLEX);
-  // Reduced coboundaries of the paired edges, filled when first needed: an apparent
-  // pair's column is its coboundary, unchanged. Few edges need one.
-  std::unordered_map<SimplexIndex, CycleSet> reduced;
-  CycleSet column, buffer;
+  // The reduced columns of the paired edges, an apparent pair's (its coboundary,
+  // unchanged) only when first needed: few edges need one.
+  StoredColumns stored (num_edges);
+  CycleSet column, owner_column, buffer;
 
   for (std::size_t k = 0; k < num_edges; ++k) {
     const auto edge = static_cast<SimplexIndex> (num_edges - 1 - k);
@@ -114,14 +156,17 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
     }
     coboundaries.coboundary (edge, column);
     while (!column.empty() && killed_edge[column.front()] != INVALID_SIMPLEX) {
-      CycleSet& owner_column = reduced[killed_edge[column.front()]];
-      if (owner_column.empty()) // an apparent pair: its column is its coboundary
-        coboundaries.coboundary (killed_edge[column.front()], owner_column);
-      addCycle (column, owner_column, buffer);
+      const SimplexIndex owner = killed_edge[column.front()];
+      if (!stored.has (owner)) { // an apparent pair: its column is its coboundary
+        coboundaries.coboundary (owner, owner_column);
+        stored.store (owner, owner_column);
+      }
+      const auto [first, last] = stored.column (owner);
+      addCycle (column, first, last, buffer);
     }
     if (!column.empty()) {
       killed_edge[column.front()] = edge;
-      reduced[edge] = column;
+      stored.store (edge, column);
     }
   }
   addTriangleDeaths (killed_edge, result);

@@ -13,18 +13,26 @@ namespace tda {
  * incremental engines (thesis Sec 5.2.3, 5.3.1). */
 using CycleSet = std::vector<SimplexIndex>;
 
+/** \brief \a target += the sorted simplices [\a first, \a last) over Z2; \a buffer is
+ * scratch space, kept by the caller to avoid allocations. */
+inline void
+addCycle (CycleSet& target,
+          const SimplexIndex* first,
+          const SimplexIndex* last,
+          CycleSet& buffer)
+{
+  buffer.clear();
+  std::set_symmetric_difference (
+      target.begin(), target.end(), first, last, std::back_inserter (buffer));
+  target.swap (buffer);
+}
+
 /** \brief \a target += \a addend over Z2 (symmetric difference, Eq. 2.1); \a buffer
  * is scratch space, kept by the caller to avoid allocations. */
 inline void
 addCycle (CycleSet& target, const CycleSet& addend, CycleSet& buffer)
 {
-  buffer.clear();
-  std::set_symmetric_difference (target.begin(),
-                                 target.end(),
-                                 addend.begin(),
-                                 addend.end(),
-                                 std::back_inserter (buffer));
-  target.swap (buffer);
+  addCycle (target, addend.data(), addend.data() + addend.size(), buffer);
 }
 
 /** \brief True when the sorted \a cycle holds \a simplex. */
