@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   cmake g++ make pkg-config          # build
   libpcl-dev libeigen3-dev libboost-dev # libraries
+  libthrust-dev libcub-dev              # the gpu/ module's OpenMP backend
   libgtest-dev libbenchmark-dev ccache  # tests and build speed
   clang-format doxygen                  # format check and API reference
   clang                                 # libFuzzer targets (test/fuzz)

@@ -14,6 +14,7 @@
 #include <pcl/tda/common/persistence_plots.h>
 #include <pcl/tda/common/phat_io.h>
 #include <pcl/tda/common/progress_bar.h>
+#include <pcl/tda/gpu/vietoris_rips_builder.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
@@ -37,6 +38,7 @@ struct Options {
   double leaf = 0.0;
   double memory_mib = 0.0;
   bool json = false;
+  bool gpu = false;
 };
 
 /** Seconds spent in each phase, for the -json summary. */
@@ -63,6 +65,13 @@ printHelp (const char* program)
               "(default: 0 = off)\n");
   print_info ("                     -memory M    = refuse complexes over M MiB "
               "(default: half of the memory)\n");
+  print_info (
+      "                     -gpu         = build the complex with "
+      "pcl::tda::gpu::VietorisRipsBuilder:\n"
+      "                                    on a CUDA device when built with CUDA "
+      "and one is\n"
+      "                                    present, else on the OpenMP backend "
+      "(same complex)\n");
   print_info ("                     -engine E    = H1 engine: cohomology (default, "
               "fastest), fip,\n"
               "                                    incremental or standard\n");
@@ -100,6 +109,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addText ("-svg", options.barcode_svg);
   command_line.addText ("-diagram", options.diagram_svg);
   command_line.addSwitch ("-json", options.json);
+  command_line.addSwitch ("-gpu", options.gpu);
   const std::vector<std::string> files = command_line.parse (argc, argv);
   pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".csv"}});
   options.input = files[0];
@@ -109,6 +119,39 @@ parseOptions (int argc, char** argv, Options& options)
                          "Unknown engine " << engine_name
                                            << ": use cohomology, fip, incremental or "
                                               "standard.");
+}
+
+/** What building the complex reports: the skipped points and the builder that ran. */
+struct BuildReport {
+  std::size_t skipped_points = 0;
+  std::string builder = "cpu";
+};
+
+/** Builds the complex of \a cloud with \a builder (the CPU builder or the gpu/ one,
+ * which have the same setters), showing its progress.
+ * \return false when the builder refused (it said why) */
+template <typename Builder>
+bool
+buildComplex (Builder& builder,
+              const Options& options,
+              const Cloud::ConstPtr& cloud,
+              pcl::tda::FilteredComplex& complex,
+              BuildReport& report)
+{
+  builder.setInputCloud (cloud);
+  builder.setRadius (options.radius);
+  builder.setMaxDimension (static_cast<int> (options.dimension) + 1);
+  if (options.memory_mib > 0.0)
+    builder.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
+  pcl::tda::ProgressBar building ("  building");
+  builder.setProgressCallback ([&building] (std::size_t done, std::size_t total) {
+    building.update (done, total);
+  });
+  const bool built = builder.compute (complex);
+  if (built)
+    building.finish();
+  report.skipped_points = builder.getNumSkippedPoints();
+  return built;
 }
 
 /** Writes the diagram and the pictures and matrix asked for, to the temporary files
@@ -172,28 +215,29 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   std::ostringstream radius;
   radius << options.radius;
   console.beginStep ("Building the Vietoris-Rips complex of radius", radius.str());
-  pcl::tda::VietorisRipsBuilder<pcl::PointXYZ> builder;
-  builder.setInputCloud (cloud);
-  builder.setRadius (options.radius);
-  builder.setMaxDimension (static_cast<int> (options.dimension) + 1);
-  if (options.memory_mib > 0.0)
-    builder.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
   pcl::tda::FilteredComplex complex;
-  pcl::tda::ProgressBar building ("  building");
-  builder.setProgressCallback ([&building] (std::size_t done, std::size_t total) {
-    building.update (done, total);
-  });
-  if (!builder.compute (complex)) {
+  BuildReport report;
+  bool built;
+  if (options.gpu) {
+    pcl::tda::gpu::VietorisRipsBuilder<pcl::PointXYZ> builder;
+    built = buildComplex (builder, options, cloud, complex, report);
+    report.builder = "gpu " + pcl::tda::gpu::backendName (builder.getBackend());
+  }
+  else {
+    pcl::tda::VietorisRipsBuilder<pcl::PointXYZ> builder;
+    built = buildComplex (builder, options, cloud, complex, report);
+  }
+  if (!built) {
     console.endLine(); // the builder said why
     print_error ("Set a larger limit with -memory M (MiB), or use a smaller -radius or "
                  "a voxel grid (-leaf).\n");
     return 1;
   }
-  building.finish();
   seconds.build = console.stepMilliseconds() / 1000.0;
   console.endStep (std::to_string (complex.numVertices()) + " points, " +
                    std::to_string (complex.numEdges()) + " edges, " +
-                   std::to_string (complex.numTriangles()) + " triangles");
+                   std::to_string (complex.numTriangles()) + " triangles" +
+                   (options.gpu ? ", " + report.builder : ""));
 
   console.beginStep ("Computing H0");
   pcl::tda::PersistenceResult result = pcl::tda::computeH0Persistence (complex);
@@ -242,9 +286,10 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     std::printf ("{\"points\": %zu, \"skipped_points\": %zu, \"edges\": %zu, "
                  "\"triangles\": %zu, \"intervals\": {\"0\": %zu, \"1\": %zu}, "
                  "\"seconds\": {\"load\": %.6f, \"build\": %.6f, \"h0\": %.6f, "
-                 "\"h1\": %.6f, \"write\": %.6f, \"total\": %.6f}}\n",
+                 "\"h1\": %.6f, \"write\": %.6f, \"total\": %.6f}, "
+                 "\"builder\": \"%s\"}\n",
                  complex.numVertices(),
-                 builder.getNumSkippedPoints(),
+                 report.skipped_points,
                  complex.numEdges(),
                  complex.numTriangles(),
                  h0_intervals,
@@ -254,7 +299,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                  seconds.h0,
                  seconds.h1,
                  seconds.write,
-                 seconds.total);
+                 seconds.total,
+                 report.builder.c_str());
   return 0;
 }
 

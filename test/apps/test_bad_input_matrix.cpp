@@ -197,6 +197,7 @@ TEST_F (BadInputMatrix, BadOptions)
       {barcode + "-foo", "Unknown option -foo"},
       {"good.pcd out.csv --radius 0.3", "Unknown option --radius"},
       {barcode + "-radius 0.2", "Option -radius is given twice."},
+      {barcode + "-gpu -gpu", "Option -gpu is given twice."},
       {barcode + "extra.csv",
        "Need the input .pcd file and the output .csv file, not 3 arguments."},
       {"good.pcd -radius 0.3",

@@ -230,6 +230,47 @@ TEST (BarcodeTool, EveryEngineWritesTheSameDiagram)
   EXPECT_GT (std::count (reference.begin(), reference.end(), '\n'), 500);
 }
 
+// -gpu builds the complex with gpu::VietorisRipsBuilder: the same complex, hence the
+// same diagram and PHAT matrix byte for byte; the JSON line names the builder, and a
+// complex over the memory limit is refused as without -gpu.
+TEST (BarcodeTool, GpuBuilderWritesTheSameOutputs)
+{
+  PCL_TDA_REQUIRE_DATA ("bunny.pcd");
+  const std::string bunny = test::dataFile ("bunny.pcd");
+  std::string outputs[2];
+  for (const bool gpu : {false, true}) {
+    const std::string name = gpu ? "gpu" : "cpu";
+    const std::string csv = temporaryPath (name + ".csv");
+    const std::string matrix = temporaryPath (name + ".bin");
+    const RunResult result =
+        run (tool() + " " + bunny + " " + csv + " -radius 0.02 -json -export-phat " +
+             matrix + (gpu ? " -gpu" : ""));
+    ASSERT_EQ (result.exit_code, 0) << result.output;
+    EXPECT_NE (
+        result.output.find (gpu ? "\"builder\": \"gpu " : "\"builder\": \"cpu\""),
+        std::string::npos)
+        << result.output;
+    std::ostringstream text;
+    text << std::ifstream (csv).rdbuf()
+         << std::ifstream (matrix, std::ios::binary).rdbuf();
+    outputs[gpu] = text.str();
+  }
+  EXPECT_GT (outputs[0].size(), 10000u);
+  EXPECT_TRUE (outputs[0] == outputs[1]);
+
+  const std::string refused = temporaryPath ("gpu_refused.csv");
+  std::remove (refused.c_str());
+  for (const bool gpu : {false, true}) {
+    const RunResult result = run (tool() + " " + bunny + " " + refused +
+                                  " -radius 0.05 -memory 0.01" + (gpu ? " -gpu" : ""));
+    EXPECT_EQ (result.exit_code, 1) << result.output;
+    EXPECT_NE (result.output.find ("over the memory limit of 10.2 KiB"),
+               std::string::npos)
+        << result.output;
+    EXPECT_FALSE (exists (refused));
+  }
+}
+
 TEST (BarcodeTool, ExportsTheComplexForPHAT)
 {
   PCL_TDA_REQUIRE_DATA ("bunny.pcd");

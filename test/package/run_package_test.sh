@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the build tree into a scratch prefix, then configures, builds and runs two
 # outside projects that use find_package(PCL_TDA ...): one with the search component
-# (and the common one it brings), one with the common component alone.
+# and the gpu component (and the common one they bring), one with the common component
+# alone.
 set -euo pipefail
 build_dir=$1
 source_dir=$(cd "$(dirname "$0")" && pwd)

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "builder_progress_check.h"
+#include "complex_difference.h"
 #include "test_data.h"
 
 #include <cmath>
@@ -119,24 +121,6 @@ randomCloud (std::mt19937& random, std::size_t n, bool with_defects)
   return cloud;
 }
 
-bool
-sameComplex (const FilteredComplex& a, const FilteredComplex& b)
-{
-  if (a.numVertices() != b.numVertices() || a.numEdges() != b.numEdges() ||
-      a.numTriangles() != b.numTriangles())
-    return false;
-  for (std::size_t e = 0; e < a.numEdges(); ++e)
-    if (a.edges()[e].source != b.edges()[e].source ||
-        a.edges()[e].target != b.edges()[e].target ||
-        a.edges()[e].value != b.edges()[e].value)
-      return false;
-  for (std::size_t t = 0; t < a.numTriangles(); ++t)
-    if (a.triangles()[t].edges != b.triangles()[t].edges ||
-        a.triangles()[t].value != b.triangles()[t].value)
-      return false;
-  return true;
-}
-
 } // namespace
 
 TEST (VietorisRipsBuilder, EqualsBruteForceOnRandomClouds)
@@ -186,12 +170,11 @@ TEST (VietorisRipsBuilder, SameComplexForShuffledInputThreadsAndSearchMethods)
 
     builder.setNumberOfThreads (2);
     ASSERT_TRUE (builder.compute (other));
-    EXPECT_TRUE (sameComplex (reference, other));
-    EXPECT_EQ (reference.pointIndices(), other.pointIndices());
+    EXPECT_EQ (test::complexDifference (reference, other), "");
 
     builder.setInputCloud (shuffled);
     ASSERT_TRUE (builder.compute (other));
-    EXPECT_TRUE (sameComplex (reference, other));
+    EXPECT_EQ (test::complexDifference (reference, other, false), "");
     for (std::size_t v = 0; v < other.numVertices(); ++v) {
       const auto& p = (*shuffled)[other.pointIndices()[v]];
       const auto& q = (*cloud)[reference.pointIndices()[v]];
@@ -202,7 +185,7 @@ TEST (VietorisRipsBuilder, SameComplexForShuffledInputThreadsAndSearchMethods)
     builder.setSearchMethod (pcl::search::KdTree<pcl::PointXYZ>::Ptr (
         new pcl::search::KdTree<pcl::PointXYZ>));
     ASSERT_TRUE (builder.compute (other));
-    EXPECT_TRUE (sameComplex (reference, other));
+    EXPECT_EQ (test::complexDifference (reference, other), "");
   }
 }
 
@@ -326,25 +309,6 @@ TEST (VietorisRipsBuilder, RefusesHugeComplexBeforeAllocating)
 TEST (VietorisRipsBuilder, ReportsProgress)
 {
   std::mt19937 random (41);
-  const Cloud::Ptr cloud = randomCloud (random, 20000, false);
-  for (const int dimension : {1, 2}) {
-    VietorisRipsBuilder<pcl::PointXYZ> builder;
-    builder.setInputCloud (cloud);
-    builder.setRadius (0.1);
-    builder.setMaxDimension (dimension);
-    FilteredComplex plain, reported;
-    ASSERT_TRUE (builder.compute (plain));
-    std::vector<std::size_t> seen;
-    builder.setProgressCallback ([&] (std::size_t done, std::size_t total) {
-      EXPECT_EQ (total, 1000u);
-      seen.push_back (done);
-    });
-    ASSERT_TRUE (builder.compute (reported));
-    ASSERT_GE (seen.size(), 5u) << "dimension " << dimension;
-    EXPECT_TRUE (std::is_sorted (seen.begin(), seen.end()))
-        << "dimension " << dimension;
-    EXPECT_EQ (seen.back(), 1000u);
-    EXPECT_EQ (reported.numEdges(), plain.numEdges());
-    EXPECT_EQ (reported.numTriangles(), plain.numTriangles());
-  }
+  test::expectReportsProgress<VietorisRipsBuilder<pcl::PointXYZ>> (
+      randomCloud (random, 20000, false), 0.1, 5);
 }

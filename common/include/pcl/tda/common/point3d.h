@@ -1,5 +1,7 @@
 #pragma once
 
+#include <pcl/tda/common/host_device.h>
+
 #include <array>
 #include <cmath>
 
@@ -11,7 +13,7 @@ namespace tda {
 using Point3d = std::array<double, 3>;
 
 /** \brief Euclidean distance of two points: the filtration value of an edge. */
-inline double
+PCL_TDA_HOST_DEVICE inline double
 distance (const Point3d& a, const Point3d& b)
 {
   const double dx = a[0] - b[0], dy = a[1] - b[1], dz = a[2] - b[2];
@@ -23,7 +25,7 @@ distance (const Point3d& a, const Point3d& b)
  * squared distance where that is clear (outside a relative band of 1e-9 around
  * r^2) and takes the square root only near the radius, so that it agrees with
  * distance() exactly. */
-inline bool
+PCL_TDA_HOST_DEVICE inline bool
 withinRadius (const Point3d& p, const Point3d& q, double radius)
 {
   const double dx = p[0] - q[0], dy = p[1] - q[1], dz = p[2] - q[2];

@@ -141,43 +141,44 @@ struct MemoryBudget {
   }
 };
 
-/** \brief The count pass of the radius edges (countRadiusEdges()) behind the
- * memory guard: refuses in bounded time a complex far over \a budget, and counts
- * exactly otherwise. Cheap bounds first: the grid's candidate pairs bound the edges
- * (O(cells)) and the count pass bounds the triangles; only when a bound is over the
- * limit is the complex estimated from a sample (estimateComplexSize()), and refused
- * when the estimate is over twice the limit. Then the exact edge count decides.
- * \param[out] counts the count pass, when it ran (it tells \a progress, when set, the
- * points done)
+/** \brief What the count pass of a radius graph's edges tells the memory guard: the
+ * exact number of edges and an upper bound on the triangles of its clique complex. */
+struct EdgeCountSummary {
+  std::uint64_t edges = 0;
+  std::uint64_t triangle_bound = 0;
+};
+
+/** \brief The memory guard around the count pass of a radius graph's edges: refuses
+ * in bounded time a complex far over \a budget, and counts exactly otherwise. Cheap
+ * bounds first: \a candidate_pairs bounds the edges and the count pass bounds the
+ * triangles; only when a bound is over the limit is the complex estimated
+ * (\a estimate, e.g. estimateComplexSize()), and refused when the estimate is over
+ * twice the limit. Then the exact edge count decides. The CPU builder runs it around
+ * countRadiusEdges(), the gpu/ mirror around its device count pass.
+ * \param[in] count_edges the count pass: returns an EdgeCountSummary
+ * \param[in] estimate returns the ComplexSize estimated from a sample
  * \param[out] size the sizes that decided: the exact edge count with the triangle
  * bound (or the estimate, when it was needed); the estimate or exact count that is
  * over the budget on refusal
  * \return false when the complex is over the budget */
-template <typename Accept>
+template <typename CountEdges, typename Estimate>
 bool
-countRadiusEdgesWithinBudget (const UniformGrid& grid,
-                              const std::vector<Point3d>& points,
-                              double radius,
-                              const Accept& accept,
-                              unsigned int threads,
-                              const MemoryBudget& budget,
-                              RadiusEdgeCounts& counts,
-                              ComplexSize& size,
-                              const ProgressCallback& progress = {})
+countEdgesWithinBudget (const MemoryBudget& budget,
+                        std::uint64_t candidate_pairs,
+                        const CountEdges& count_edges,
+                        const Estimate& estimate,
+                        ComplexSize& size)
 {
-  const auto estimate = [&] () {
-    return estimateComplexSize (grid, points, radius, accept, threads);
-  };
   const auto far_over = [&budget] (double edges, double triangles) {
     return budget.bytes (edges, triangles) > 2.0 * static_cast<double> (budget.limit);
   };
-  if (!budget.fits (static_cast<double> (grid.numCandidatePairs()), 0.0)) {
+  if (!budget.fits (static_cast<double> (candidate_pairs), 0.0)) {
     size = estimate();
     if (far_over (size.edges, size.triangles))
       return false;
   }
-  counts = countRadiusEdges (grid, points, radius, accept, threads, progress);
-  const auto edges = static_cast<double> (counts.offsets.back());
+  const EdgeCountSummary counts = count_edges();
+  const auto edges = static_cast<double> (counts.edges);
   size = {edges, static_cast<double> (counts.triangle_bound), false};
   if (!budget.fits (edges, 0.0)) {
     size.exact = true;
@@ -192,6 +193,36 @@ countRadiusEdgesWithinBudget (const UniformGrid& grid,
       return false;
   }
   return true;
+}
+
+/** \brief The count pass of the radius edges (countRadiusEdges()) behind the
+ * memory guard countEdgesWithinBudget(), with the grid's candidate pairs as the
+ * bound on the edges and estimateComplexSize() as the estimate.
+ * \param[out] counts the count pass, when it ran (it tells \a progress, when set, the
+ * points done)
+ * \param[out] size as countEdgesWithinBudget()
+ * \return false when the complex is over the budget */
+template <typename Accept>
+bool
+countRadiusEdgesWithinBudget (const UniformGrid& grid,
+                              const std::vector<Point3d>& points,
+                              double radius,
+                              const Accept& accept,
+                              unsigned int threads,
+                              const MemoryBudget& budget,
+                              RadiusEdgeCounts& counts,
+                              ComplexSize& size,
+                              const ProgressCallback& progress = {})
+{
+  const auto count_edges = [&] () {
+    counts = countRadiusEdges (grid, points, radius, accept, threads, progress);
+    return EdgeCountSummary{counts.offsets.back(), counts.triangle_bound};
+  };
+  const auto estimate = [&] () {
+    return estimateComplexSize (grid, points, radius, accept, threads);
+  };
+  return countEdgesWithinBudget (
+      budget, grid.numCandidatePairs(), count_edges, estimate, size);
 }
 
 /** \brief The minimum spanning forest of the radius graph of \a points: the only

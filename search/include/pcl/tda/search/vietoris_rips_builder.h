@@ -2,8 +2,9 @@
 
 #include <pcl/search/search.h>
 #include <pcl/tda/common/filtered_complex.h>
-#include <pcl/tda/common/progress.h>
-#include <pcl/tda/search/complex_size.h>
+#include <pcl/tda/search/vietoris_rips_checks.h>
+#include <pcl/tda/search/vietoris_rips_phases.h>
+#include <pcl/tda/search/vietoris_rips_settings.h>
 #include <pcl/pcl_base.h>
 
 #include <cstddef>
@@ -11,14 +12,6 @@
 
 namespace pcl {
 namespace tda {
-
-/** \brief Wall-clock seconds of the three phases of the last
- * VietorisRipsBuilder::compute() call. */
-struct VietorisRipsTimings {
-  double neighbor_search = 0.0;
-  double edges = 0.0;
-  double triangles = 0.0;
-};
 
 /** \brief Builds the Vietoris-Rips complex VR_r of a point cloud up to dimension 2
  * as a FilteredComplex, in three parallel phases (thesis Ch. 3, Alg 3.2-3.5):
@@ -42,7 +35,7 @@ struct VietorisRipsTimings {
  * \endcode
  */
 template <typename PointT>
-class VietorisRipsBuilder : public pcl::PCLBase<PointT> {
+class VietorisRipsBuilder : public pcl::PCLBase<PointT>, public VietorisRipsSettings {
 public:
   using Ptr = shared_ptr<VietorisRipsBuilder<PointT>>;
   using ConstPtr = shared_ptr<const VietorisRipsBuilder<PointT>>;
@@ -56,37 +49,8 @@ public:
 
   /** \brief Bytes the builder needs per edge and per triangle at its peak; the
    * memory limit is checked against these before allocating. */
-  static constexpr std::size_t BYTES_PER_EDGE = 64;
-  static constexpr std::size_t BYTES_PER_TRIANGLE = 24;
-
-  VietorisRipsBuilder();
-
-  /** \brief Sets the radius r of VR_r: the largest edge length (> 0). */
-  void
-  setRadius (double radius)
-  {
-    radius_ = radius;
-  }
-
-  double
-  getRadius () const
-  {
-    return radius_;
-  }
-
-  /** \brief Sets the largest simplex dimension: 1 (edges, enough for H0) or 2
-   * (triangles too, needed for H1). Default 2. */
-  void
-  setMaxDimension (int max_dimension)
-  {
-    max_dimension_ = max_dimension;
-  }
-
-  int
-  getMaxDimension () const
-  {
-    return max_dimension_;
-  }
+  static constexpr std::size_t BYTES_PER_EDGE = VIETORIS_RIPS_BYTES_PER_EDGE;
+  static constexpr std::size_t BYTES_PER_TRIANGLE = VIETORIS_RIPS_BYTES_PER_TRIANGLE;
 
   /** \brief Sets a PCL search object for the neighbour search (phase 1). Without
    * one, a uniform grid of cell size r is used, which is faster for fixed-radius
@@ -101,44 +65,6 @@ public:
   getSearchMethod () const
   {
     return search_;
-  }
-
-  /** \brief Sets the memory the complex may take, in bytes; a larger complex is
-   * refused before allocation. Default: half of the physical memory (no limit where
-   * it cannot be read). */
-  void
-  setMemoryLimit (std::size_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-
-  std::size_t
-  getMemoryLimit () const
-  {
-    return memory_limit_;
-  }
-
-  /** \brief Sets the number of OpenMP threads of every phase (0: OpenMP's default);
-   * the complex does not depend on it. */
-  void
-  setNumberOfThreads (unsigned int threads)
-  {
-    threads_ = threads;
-  }
-
-  unsigned int
-  getNumberOfThreads () const
-  {
-    return threads_;
-  }
-
-  /** \brief Sets a callback told the progress of compute() in thousandths (done,
-   * 1000), from one thread, e.g. to drive a ProgressBar: long builds are not
-   * silent. */
-  void
-  setProgressCallback (const ProgressCallback& progress)
-  {
-    progress_ = progress;
   }
 
   /** \brief Builds the complex of the input points (or of the indexed ones).
@@ -171,29 +97,6 @@ protected:
   }
 
 private:
-  /** The ends of the phases of compute(), for its progress. */
-  enum BuildPhase {
-    START,
-    EDGES_COUNTED,
-    EDGES_LISTED,
-    EDGES_SORTED,
-    TRIANGLES_COUNTED,
-    DONE
-  };
-
-  /** Where \a phase ends, in thousandths of the build. */
-  std::size_t
-  permilleAt (BuildPhase phase) const;
-
-  /** The progress callback of a phase from \a first to \a last (none without a
-   * callback). */
-  ProgressCallback
-  phaseProgress (BuildPhase first, BuildPhase last) const;
-
-  /** Tells the callback that \a phase is done. */
-  void
-  reportPhase (BuildPhase phase) const;
-
   /** The memory limit with the builder's bytes per simplex. */
   MemoryBudget
   memoryBudget () const;
@@ -203,12 +106,7 @@ private:
   bool
   fitsMemory (const ComplexSize& size) const;
 
-  double radius_ = 0.0;
-  int max_dimension_ = 2;
   SearchPtr search_;
-  std::size_t memory_limit_;
-  unsigned int threads_ = 0;
-  ProgressCallback progress_;
   std::size_t skipped_points_ = 0;
   VietorisRipsTimings timings_;
   std::string class_name_ = "VietorisRipsBuilder";

@@ -1,0 +1,92 @@
+#pragma once
+
+#include <pcl/tda/common/progress.h>
+#include <pcl/tda/common/system_memory.h>
+
+#include <cstddef>
+
+namespace pcl {
+namespace tda {
+
+/** \brief The settings of a Vietoris-Rips build, with PCL-style setters: one set
+ * for this module's VietorisRipsBuilder and the gpu/ module's
+ * gpu::VietorisRipsBuilder, which take the same settings and build the same
+ * complex from them. */
+class VietorisRipsSettings {
+public:
+  /** \brief Sets the radius r of VR_r: the largest edge length (> 0). */
+  void
+  setRadius (double radius)
+  {
+    radius_ = radius;
+  }
+
+  double
+  getRadius () const
+  {
+    return radius_;
+  }
+
+  /** \brief Sets the largest simplex dimension: 1 (edges, enough for H0) or 2
+   * (triangles too, needed for H1). Default 2. */
+  void
+  setMaxDimension (int max_dimension)
+  {
+    max_dimension_ = max_dimension;
+  }
+
+  int
+  getMaxDimension () const
+  {
+    return max_dimension_;
+  }
+
+  /** \brief Sets the memory the complex may take, in bytes (device memory when
+   * gpu::VietorisRipsBuilder runs on CUDA); a larger complex is refused before
+   * allocation. Default: half of the physical memory (no limit where it cannot be
+   * read). */
+  void
+  setMemoryLimit (std::size_t bytes)
+  {
+    memory_limit_ = bytes;
+  }
+
+  std::size_t
+  getMemoryLimit () const
+  {
+    return memory_limit_;
+  }
+
+  /** \brief Sets the number of OpenMP threads of every phase (0: OpenMP's default);
+   * the complex does not depend on it. */
+  void
+  setNumberOfThreads (unsigned int threads)
+  {
+    threads_ = threads;
+  }
+
+  unsigned int
+  getNumberOfThreads () const
+  {
+    return threads_;
+  }
+
+  /** \brief Sets a callback told the progress of a build in thousandths (done,
+   * 1000), from one thread, e.g. to drive a ProgressBar: long builds are not
+   * silent. */
+  void
+  setProgressCallback (const ProgressCallback& progress)
+  {
+    progress_ = progress;
+  }
+
+protected:
+  double radius_ = 0.0;
+  int max_dimension_ = 2;
+  std::size_t memory_limit_ = defaultMemoryLimit();
+  unsigned int threads_ = 0;
+  ProgressCallback progress_;
+};
+
+} // namespace tda
+} // namespace pcl
