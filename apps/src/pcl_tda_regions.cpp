@@ -52,6 +52,11 @@ printHelp (const char* program)
               RegionSettings::RADIUS_PER_SPACING,
               RegionSettings::SPACING_QUANTILE,
               RegionSettings::SPACING_NEIGHBOR);
+  print_info ("    -image-ratio K = in an organized cloud (a depth image), also join "
+              "neighbouring\n                  pixels up to K times their range "
+              "apart, beyond the radius\n                  (default %g; 0: not "
+              "used)\n",
+              RegionSettings::IMAGE_NEIGHBOR_RATIO);
   print_info ("    -point-color DE = largest colour difference of neighbours in a "
               "patch, in CIELAB\n                  Delta E76 (default %g)\n",
               ToolRegionGrowing::DEFAULT_COLOR_THRESHOLD);
@@ -90,6 +95,8 @@ parseOptions (int argc, char** argv, Options& options)
   pcl::tda::ToolCommandLine command_line;
   command_line.addNumber (
       "-radius", settings.radius, pcl::tda::NumberRange::above (0.0, 1e9));
+  command_line.addNumber (
+      "-image-ratio", settings.image_ratio, pcl::tda::NumberRange::atLeast (0.0, 1.0));
   command_line.addNumber (
       "-point-color", settings.point_color, pcl::tda::NumberRange::above (0.0, 1e3));
   command_line.addNumber (

@@ -23,6 +23,7 @@ configureRegionGrowing (ToolRegionGrowing& growing,
 {
   growing.setMaxDistance (radius);
   growing.setMinNeighbors (RegionSettings::MIN_NEIGHBORS);
+  growing.setImageNeighborRatio (settings.image_ratio);
   growing.setColorThreshold (settings.point_color);
   growing.setAutoColorThreshold (settings.region_color == 0.0);
   growing.setRegionColorThreshold (settings.region_color == 0.0

@@ -18,6 +18,35 @@ namespace {
 /** How many times the typical change (the noise) a colour may change at most. */
 constexpr float NOISE_CHANGES = 3.0f;
 
+/** The key of the edge between \a a and \a b, for a sorted set of edges. */
+std::uint64_t
+edgeKey (SimplexIndex a, SimplexIndex b)
+{
+  return (static_cast<std::uint64_t> (std::min (a, b)) << 32) | std::max (a, b);
+}
+
+/** Appends to \a graph the edges of \a added that it does not have, once each;
+ * the edges within \a radius are in it already (the radius graph). */
+void
+appendNewEdges (double radius,
+                std::vector<FilteredEdge> added,
+                std::vector<FilteredEdge>& graph)
+{
+  std::vector<std::uint64_t> longer;
+  for (const FilteredEdge& edge : graph)
+    if (edge.value > radius)
+      longer.push_back (edgeKey (edge.source, edge.target));
+  std::sort (longer.begin(), longer.end());
+  std::sort (added.begin(), added.end(), edgeFiltrationLess);
+  std::uint64_t previous = std::numeric_limits<std::uint64_t>::max();
+  for (const FilteredEdge& edge : added) {
+    const std::uint64_t key = edgeKey (edge.source, edge.target);
+    if (key != previous && !std::binary_search (longer.begin(), longer.end(), key))
+      graph.push_back (edge);
+    previous = key;
+  }
+}
+
 } // namespace
 
 bool
@@ -95,14 +124,47 @@ addNearestNeighbors (const std::vector<Point3d>& points,
           {std::min (v, w), std::max (v, w), distance (points[v], points[w])});
     }
   }
-  std::sort (added.begin(), added.end(), edgeFiltrationLess);
-  added.erase (std::unique (added.begin(),
-                            added.end(),
-                            [] (const FilteredEdge& a, const FilteredEdge& b) {
-                              return a.source == b.source && a.target == b.target;
-                            }),
-               added.end());
-  graph.insert (graph.end(), added.begin(), added.end());
+  appendNewEdges (radius, std::move (added), graph);
+}
+
+void
+addImageNeighbors (const std::vector<Point3d>& points,
+                   const std::vector<SimplexIndex>& vertex_of_pixel,
+                   std::size_t width,
+                   const Point3d& sensor,
+                   double radius,
+                   double range_ratio,
+                   std::vector<FilteredEdge>& graph)
+{
+  if (range_ratio <= 0.0 || width == 0)
+    return;
+  const std::size_t height = vertex_of_pixel.size() / width;
+  std::vector<FilteredEdge> added;
+  // Every pair of neighbouring pixels once: right, and the three below.
+  const int steps[4][2] = {{0, 1}, {1, -1}, {1, 0}, {1, 1}};
+  for (std::size_t row = 0; row < height; ++row)
+    for (std::size_t column = 0; column < width; ++column) {
+      const SimplexIndex v = vertex_of_pixel[row * width + column];
+      if (v == INVALID_SIMPLEX)
+        continue;
+      for (const auto& step : steps) {
+        const std::size_t next_row = row + step[0];
+        const auto next_column = static_cast<std::ptrdiff_t> (column) + step[1];
+        if (next_row >= height || next_column < 0 ||
+            next_column >= static_cast<std::ptrdiff_t> (width))
+          continue;
+        const SimplexIndex w = vertex_of_pixel[next_row * width + next_column];
+        if (w == INVALID_SIMPLEX || w == v ||
+            withinRadius (points[v], points[w], radius))
+          continue;
+        const double length = distance (points[v], points[w]);
+        const double range =
+            std::min (distance (points[v], sensor), distance (points[w], sensor));
+        if (length <= range_ratio * range)
+          added.push_back ({std::min (v, w), std::max (v, w), length});
+      }
+    }
+  appendNewEdges (radius, std::move (added), graph);
 }
 
 NeighborLists

@@ -250,6 +250,8 @@ TEST_F (BadInputMatrix, BadOptions)
        "Option -color needs a number > 0 and <= 1000, not '-3'."},
       {regions + "-point-color nan",
        "Option -point-color needs a number > 0 and <= 1000, not 'nan'."},
+      {regions + "-image-ratio -0.5",
+       "Option -image-ratio needs a number >= 0 and <= 1, not '-0.5'."},
       {regions + "-angle 0", "Option -angle needs a number > 0 and <= 90, not '0'."},
       {regions + "-angle 91", "Option -angle needs a number > 0 and <= 90, not '91'."},
       {regions + "-min 0", "Option -min needs an integer from 1 to 2147483647"},

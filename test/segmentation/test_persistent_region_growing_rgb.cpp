@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <random>
@@ -91,6 +92,35 @@ grow (RegionGrowing& growing, const Cloud::ConstPtr& cloud)
   std::vector<pcl::PointIndices> regions;
   growing.extract (regions);
   return regions;
+}
+
+/** The radius graph of \a points (neighborGraph()). */
+std::vector<FilteredEdge>
+radiusGraph (const std::vector<Point3d>& points, double radius)
+{
+  std::vector<FilteredEdge> graph;
+  ComplexSize size;
+  EXPECT_TRUE (neighborGraph (
+      points, radius, 1, MemoryBudget{std::size_t (1) << 30, 24, 0}, graph, size));
+  return graph;
+}
+
+/** Expects every edge of \a graph once, ends in increasing order, and the edges
+ * added after the first \a radius_edges (those of the radius graph) longer than
+ * \a radius. */
+void
+expectEdgesOnceAddedBeyond (const std::vector<FilteredEdge>& graph,
+                            std::size_t radius_edges,
+                            double radius)
+{
+  std::set<std::pair<SimplexIndex, SimplexIndex>> pairs;
+  for (std::size_t e = 0; e < graph.size(); ++e) {
+    EXPECT_TRUE (pairs.insert ({graph[e].source, graph[e].target}).second);
+    EXPECT_LT (graph[e].source, graph[e].target);
+    if (e >= radius_edges) {
+      EXPECT_GT (graph[e].value, radius);
+    }
+  }
 }
 
 } // namespace
@@ -321,6 +351,8 @@ TEST (PersistentRegionGrowingRGB, RefusesBadInput)
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setColorThreshold (0.0); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setColorThreshold (-1.0); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setRegionColorThreshold (-1.0); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setImageNeighborRatio (-0.1); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setImageNeighborRatio (INFINITY); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) {
     g.setAutoColorThreshold (true);
     g.setRegionColorThreshold (0.0);
@@ -406,19 +438,61 @@ TEST (PersistentRegionGrowingRGB, MinNeighborsJoinSparseRows)
   std::vector<Point3d> points;
   for (const auto& p : *cloud)
     points.push_back ({p.x, p.y, p.z});
-  std::vector<FilteredEdge> graph;
-  ComplexSize size;
-  ASSERT_TRUE (neighborGraph (
-      points, 0.003, 1, MemoryBudget{std::size_t (1) << 30, 24, 0}, graph, size));
+  std::vector<FilteredEdge> graph = radiusGraph (points, 0.003);
   const std::size_t radius_edges = graph.size();
   addNearestNeighbors (points, 0.003, 5, graph);
   ASSERT_GT (graph.size(), radius_edges);
-  std::set<std::pair<SimplexIndex, SimplexIndex>> pairs;
-  for (std::size_t e = 0; e < graph.size(); ++e) {
-    EXPECT_TRUE (pairs.insert ({graph[e].source, graph[e].target}).second);
-    EXPECT_LT (graph[e].source, graph[e].target);
-    if (e >= radius_edges) {
-      EXPECT_GT (graph[e].value, 0.003);
+  expectEdgesOnceAddedBeyond (graph, radius_edges, 0.003);
+}
+
+// An organized frame: 8 rows of a surface 1 mm apart along and 1 cm apart across at
+// a range of about 1 m (a surface seen at a grazing angle), then 4 rows of another
+// surface of the same colour 20 cm behind it, with a lost pixel. The radius graph of
+// 3 mm cuts the rows into 12 strips; the image neighbours within 2% of the range
+// join the rows of each surface but not the two surfaces; an unorganized copy of
+// the points is not affected. Edges are added once each, longer than the radius.
+TEST (PersistentRegionGrowingRGB, ImageNeighborsJoinTheRowsOfADepthFrame)
+{
+  const std::size_t width = 60, height = 12;
+  Cloud::Ptr frame (new Cloud (width, height));
+  for (std::size_t row = 0; row < height; ++row)
+    for (std::size_t column = 0; column < width; ++column) {
+      pcl::PointXYZRGB& point = frame->at (column, row);
+      point.x = 0.001f * column;
+      point.y = -0.3f;
+      point.z = row < 8 ? 1.0f + 0.01f * row : 1.3f + 0.01f * row;
+      point.r = 90, point.g = 140, point.b = 60;
     }
+  frame->at (30, 3).x = std::numeric_limits<float>::quiet_NaN();
+  RegionGrowing growing;
+  growing.setMaxDistance (0.003);
+  growing.setMinClusterSize (10);
+  EXPECT_EQ (grow (growing, frame).size(), 12u);
+  growing.setImageNeighborRatio (0.02);
+  const auto regions = grow (growing, frame);
+  ASSERT_EQ (regions.size(), 2u);
+  EXPECT_EQ (regions[0].indices.size(), 8 * width - 1);
+  EXPECT_EQ (regions[1].indices.size(), 4 * width);
+  Cloud::Ptr unorganized (new Cloud (*frame));
+  unorganized->width = static_cast<std::uint32_t> (unorganized->size());
+  unorganized->height = 1;
+  EXPECT_EQ (grow (growing, unorganized).size(), 12u);
+
+  // The graph: the image neighbours, then the nearest points, each edge once.
+  std::vector<Point3d> points;
+  std::vector<SimplexIndex> vertex_of_pixel;
+  for (const auto& p : *frame) {
+    vertex_of_pixel.push_back (std::isfinite (p.x) ? points.size() : INVALID_SIMPLEX);
+    if (std::isfinite (p.x))
+      points.push_back ({p.x, p.y, p.z});
   }
+  std::vector<FilteredEdge> graph = radiusGraph (points, 0.003);
+  const std::size_t radius_edges = graph.size();
+  addImageNeighbors (
+      points, vertex_of_pixel, width, {0.0, 0.0, 0.0}, 0.003, 0.02, graph);
+  // From every pixel to the three below it, within each surface (7 + 3 pairs of
+  // rows), but at the rows' ends and around the lost pixel.
+  EXPECT_EQ (graph.size() - radius_edges, 10 * (3 * width - 2) - 6);
+  addNearestNeighbors (points, 0.003, 5, graph);
+  expectEdgesOnceAddedBeyond (graph, radius_edges, 0.003);
 }

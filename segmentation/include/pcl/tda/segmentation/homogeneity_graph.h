@@ -56,12 +56,37 @@ neighborGraph (const std::vector<Point3d>& points,
                ComplexSize& size,
                const ProgressCallback& progress = {});
 
+/** \brief Joins the neighbouring pixels of a depth image (an organized cloud) that
+ * lie farther apart than the radius but within \a range_ratio times the range of
+ * the nearer one (its distance from the sensor): the rows of a surface seen at a
+ * grazing angle, which the radius graph leaves apart, while the jumps in depth at an
+ * object's outline stay cut. Each pixel is compared with its 8 neighbours. Adds the
+ * edges (valued by length, ends in increasing order) that are not in the graph
+ * already, i.e. those longer than the radius. Deterministic.
+ * \param[in] points the points, vertex v at points[v]
+ * \param[in] vertex_of_pixel the vertex of every pixel, row by row (INVALID_SIMPLEX:
+ * none)
+ * \param[in] width the width of the image
+ * \param[in] sensor the position of the sensor
+ * \param[in] radius the radius of \a graph
+ * \param[in] range_ratio the longest edge per unit of range (0: nothing to do)
+ * \param[in,out] graph the radius graph (neighborGraph()), extended */
+void
+addImageNeighbors (const std::vector<Point3d>& points,
+                   const std::vector<SimplexIndex>& vertex_of_pixel,
+                   std::size_t width,
+                   const Point3d& sensor,
+                   double radius,
+                   double range_ratio,
+                   std::vector<FilteredEdge>& graph);
+
 /** \brief Joins the points that have fewer than \a k neighbours in the radius graph
  * to their 3 k nearest points (k-d tree), so that sparse parts of a cloud stay
  * connected: the far side of a depth frame, where rows of points lie farther apart
  * than the radius (3 k, since the k nearest may all lie along the point's row). Adds
  * the edges (valued by length, ends in increasing order) that are not in the graph
- * already, i.e. those longer than the radius; dense parts are left as they are.
+ * already (the radius graph's, and those added before, e.g. by
+ * addImageNeighbors()); dense parts are left as they are.
  * Deterministic. \param[in] points the points, vertex v at points[v] \param[in] radius
  * the radius of \a graph \param[in] k the fewest neighbours of a point (0: nothing to
  * do) \param[in,out] graph the radius graph (neighborGraph()), extended */

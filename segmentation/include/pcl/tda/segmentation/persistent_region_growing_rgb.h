@@ -183,6 +183,26 @@ public:
     return min_neighbors_;
   }
 
+  /** \brief Sets the longest edge between neighbouring pixels per unit of range
+   * (>= 0, default 0: off). With an organized input (a depth image), each point is
+   * also joined to those of its 8 neighbours in the image that lie beyond the max
+   * distance but within \a ratio times the range of the nearer one (its distance
+   * from the cloud's sensor_origin_; addImageNeighbors()): the rows of a surface
+   * seen at a grazing angle, farther apart than the max distance, then stay one
+   * surface, while the jumps in depth at an object's outline stay cut. Unorganized
+   * inputs are not affected. */
+  void
+  setImageNeighborRatio (double ratio)
+  {
+    image_neighbor_ratio_ = ratio;
+  }
+
+  double
+  getImageNeighborRatio () const
+  {
+    return image_neighbor_ratio_;
+  }
+
   /** \brief Sets the colour threshold of the first filtration (> 0, default
    * DEFAULT_COLOR_THRESHOLD): the largest Delta E76 between the CIELAB colours of two
    * neighbours in one patch (pcl::RegionGrowingRGB's point colour threshold). */
@@ -507,6 +527,7 @@ private:
   NormalsConstPtr normals_;
   bool estimate_normals_ = false;
   std::size_t min_neighbors_ = 0;
+  double image_neighbor_ratio_ = 0.0;
   double max_distance_ = 0.0;
   double color_threshold_ = DEFAULT_COLOR_THRESHOLD;
   double region_color_threshold_ = DEFAULT_REGION_COLOR_THRESHOLD;

@@ -36,6 +36,13 @@ PersistentRegionGrowingRGB<PointT, NormalT>::checkParameters() const
                max_distance_);
     return false;
   }
+  if (!(image_neighbor_ratio_ >= 0.0) || !std::isfinite (image_neighbor_ratio_)) {
+    PCL_ERROR ("[pcl::tda::%s::extract] The image neighbour ratio must be finite and "
+               "at least 0, not %g.\n",
+               name,
+               image_neighbor_ratio_);
+    return false;
+  }
   if (!(color_threshold_ > 0.0) || !std::isfinite (color_threshold_)) {
     PCL_ERROR ("[pcl::tda::%s::extract] The colour threshold must be a positive Delta "
                "E, not %g.\n",
@@ -200,6 +207,19 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
         formatBytes (static_cast<double> (memory_limit_)).c_str());
     deinitCompute();
     return;
+  }
+  if (image_neighbor_ratio_ > 0.0 && input_->isOrganized()) {
+    std::vector<SimplexIndex> vertex_of_pixel (input_->size(), INVALID_SIMPLEX);
+    for (std::size_t v = 0; v < n; ++v)
+      vertex_of_pixel[point_of[v]] = static_cast<SimplexIndex> (v);
+    const Eigen::Vector4f& sensor = input_->sensor_origin_;
+    addImageNeighbors (vertices.points,
+                       vertex_of_pixel,
+                       input_->width,
+                       {sensor[0], sensor[1], sensor[2]},
+                       max_distance_,
+                       image_neighbor_ratio_,
+                       graph);
   }
   addNearestNeighbors (vertices.points, max_distance_, min_neighbors_, graph);
   const bool estimate_normals = estimate_normals_ && !normals_;
