@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -39,12 +40,14 @@ run (const std::string& command)
   return result;
 }
 
-/** A temporary file name of its own for the running test (tests run in parallel). */
+/** A temporary file name of its own for the running test and process (tests run
+ * in parallel, and two builds' tests may run at once). */
 inline std::string
 temporaryPath (const std::string& prefix, const std::string& name)
 {
   return testing::TempDir() + prefix + "_" +
-         testing::UnitTest::GetInstance()->current_test_info()->name() + "_" + name;
+         testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+         std::to_string (::getpid()) + "_" + name;
 }
 
 /** A fresh, empty folder of its own for the running test. */

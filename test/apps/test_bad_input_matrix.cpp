@@ -63,9 +63,7 @@ protected:
   void
   SetUp () override
   {
-    folder_ = testing::TempDir() + "bad_input_matrix_" +
-              testing::UnitTest::GetInstance()->current_test_info()->name();
-    std::filesystem::remove_all (folder_);
+    folder_ = pcl::tda::test::temporaryFolder ("bad_input_matrix");
     std::filesystem::create_directories (folder_ + "/x.pcd");
     pcl::tda::CircleParameters circle;
     circle.num_points = 200;
