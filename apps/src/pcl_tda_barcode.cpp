@@ -3,6 +3,7 @@
 
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
+#include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
@@ -39,6 +40,7 @@ struct Options {
   double memory_mib = 0.0;
   bool json = false;
   bool gpu = false;
+  bool png = false;
 };
 
 /** Seconds spent in each phase, for the -json summary. */
@@ -82,6 +84,9 @@ printHelp (const char* program)
   print_info ("                     -svg F.svg   = also draw the barcode\n");
   print_info (
       "                     -diagram F.svg = also draw the persistence diagram\n");
+  print_info ("                     -png         = also write each SVG picture as PNG "
+              "beside it\n"
+              "                                    (F.png for F.svg)\n");
   print_info ("                     -json        = end with one JSON line of sizes and "
               "timings\n");
   print_info ("  Outputs are written only when the whole run succeeds.\n");
@@ -110,6 +115,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addText ("-diagram", options.diagram_svg);
   command_line.addSwitch ("-json", options.json);
   command_line.addSwitch ("-gpu", options.gpu);
+  command_line.addSwitch ("-png", options.png);
   const std::vector<std::string> files = command_line.parse (argc, argv);
   pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".csv"}});
   options.input = files[0];
@@ -119,6 +125,16 @@ parseOptions (int argc, char** argv, Options& options)
                          "Unknown engine " << engine_name
                                            << ": use cohomology, fip, incremental or "
                                               "standard.");
+  if (options.png && options.barcode_svg.empty() && options.diagram_svg.empty())
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "-png has no use without -svg or -diagram.");
+}
+
+/** The PNG picture of -png beside the SVG picture \a svg; "" for none. */
+std::string
+pngOutput (const Options& options, const std::string& svg)
+{
+  return options.png && !svg.empty() ? pcl::tda::pngBesideSVG (svg) : "";
 }
 
 /** What building the complex reports: the skipped points and the builder that ran. */
@@ -183,6 +199,11 @@ writeOutputs (const Options& options,
   if (!options.diagram_svg.empty())
     pcl::tda::savePersistenceDiagramSVG (
         outputs.temporary (options.diagram_svg), diagram, plot);
+  if (options.png)
+    for (const std::string& svg : {options.barcode_svg, options.diagram_svg})
+      if (!svg.empty())
+        pcl::tda::renderSVGToPNG (outputs.temporary (svg),
+                                  outputs.temporary (pcl::tda::pngBesideSVG (svg)));
 }
 
 int
@@ -192,7 +213,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                                  {{"output", options.output},
                                   {"-svg", options.barcode_svg},
                                   {"-diagram", options.diagram_svg},
-                                  {"-export-phat", options.phat_matrix}});
+                                  {"-export-phat", options.phat_matrix},
+                                  {"-png", pngOutput (options, options.barcode_svg)},
+                                  {"-png", pngOutput (options, options.diagram_svg)}});
   TicToc total;
   PhaseSeconds seconds;
   total.tic();
@@ -274,8 +297,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   }
   seconds.write = console.stepMilliseconds() / 1000.0;
   console.endStep (std::to_string (diagram.size()) + " intervals");
-  for (const std::string& file :
-       {options.barcode_svg, options.diagram_svg, options.phat_matrix})
+  for (const std::string& file : {options.barcode_svg,
+                                  pngOutput (options, options.barcode_svg),
+                                  options.diagram_svg,
+                                  pngOutput (options, options.diagram_svg),
+                                  options.phat_matrix})
     if (!file.empty()) {
       print_info ("Written: ");
       print_value ("%s\n", file.c_str());

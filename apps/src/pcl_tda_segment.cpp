@@ -6,6 +6,7 @@
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
@@ -34,6 +35,7 @@ struct Options {
   long max_size = std::numeric_limits<int>::max();
   bool automatic = false;
   double memory_mib = 0.0;
+  bool png = false;
 };
 
 void
@@ -58,6 +60,8 @@ printHelp (const char* program)
   print_info ("    -memory M   = refuse radius graphs over M MiB (default: half of "
               "the memory)\n");
   print_info ("    -svg F.svg  = also draw the H0 barcode (with the chosen cut)\n");
+  print_info (
+      "    -png        = also write the SVG picture as PNG beside it (F.png)\n");
   print_info ("  Outputs are written only when the whole run succeeds.\n");
 }
 
@@ -87,6 +91,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addNumber (
       "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
   command_line.addText ("-svg", options.barcode_svg);
+  command_line.addSwitch ("-png", options.png);
   const std::vector<std::string> files = command_line.parse (argc, argv);
   pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".pcd"}});
   options.input = files[0];
@@ -96,13 +101,19 @@ parseOptions (int argc, char** argv, Options& options)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "Need 1 <= -min <= -max, not " << options.min_size << " and "
                                                         << options.max_size << ".");
+  if (options.png && options.barcode_svg.empty())
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "-png has no use without -svg.");
 }
 
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
-  pcl::tda::ToolOutputs outputs (
-      options.input, {{"output", options.output}, {"-svg", options.barcode_svg}});
+  const std::string barcode_png =
+      options.png ? pcl::tda::pngBesideSVG (options.barcode_svg) : "";
+  pcl::tda::ToolOutputs outputs (options.input,
+                                 {{"output", options.output},
+                                  {"-svg", options.barcode_svg},
+                                  {"-png", barcode_png}});
   Cloud::Ptr cloud (new Cloud);
   if (!console.loadInput (options.input, *cloud))
     return 1;
@@ -193,6 +204,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       pcl::tda::saveBarcodeSVG (outputs.temporary (options.barcode_svg),
                                 extraction.getPersistenceDiagram(),
                                 plot);
+      if (options.png)
+        pcl::tda::renderSVGToPNG (outputs.temporary (options.barcode_svg),
+                                  outputs.temporary (barcode_png));
     }
     outputs.commit();
   }
