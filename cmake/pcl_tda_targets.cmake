@@ -8,8 +8,10 @@ function(pcl_tda_add_library module)
   set(target pcl_tda_${module})
   add_library(${target} SHARED ${ARG_SOURCES})
   add_library(pcl_tda::${module} ALIAS ${target})
+  # Installed, a library finds the modules it builds on beside itself.
   set_target_properties(${target} PROPERTIES EXPORT_NAME ${module}
-                                             VERSION ${PROJECT_VERSION})
+                                             VERSION ${PROJECT_VERSION}
+                                             INSTALL_RPATH "$ORIGIN")
   target_include_directories(${target} PUBLIC
     $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include>
     $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}/pcl_tda>)
@@ -29,5 +31,8 @@ function(pcl_tda_add_tool name)
   cmake_parse_arguments(ARG "" "" "SOURCES;LINK" ${ARGN})
   add_executable(pcl_tda_${name} ${ARG_SOURCES})
   target_link_libraries(pcl_tda_${name} PRIVATE ${ARG_LINK})
+  # Installed, a tool finds the libraries in the prefix it is installed in.
+  set_target_properties(pcl_tda_${name} PROPERTIES
+    INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}")
   install(TARGETS pcl_tda_${name} RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endfunction()

@@ -14,6 +14,5 @@ for project in full common_only; do
     -DCMAKE_PREFIX_PATH="$scratch/prefix" -DCMAKE_BUILD_TYPE=Release > /dev/null
   cmake --build "$scratch/$project" > /dev/null
 done
-export LD_LIBRARY_PATH="$scratch/prefix/lib:${LD_LIBRARY_PATH:-}"
 "$scratch/full/package_user"
 "$scratch/common_only/common_user"

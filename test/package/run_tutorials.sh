@@ -14,7 +14,6 @@ data_dir=$source_dir/../shared/data
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 cmake --install "$build_dir" --prefix "$scratch/prefix" > /dev/null
-export LD_LIBRARY_PATH="$scratch/prefix/lib:${LD_LIBRARY_PATH:-}"
 found=0
 # Prints the first fenced block of language $2 of the page $1.
 page_block() {
