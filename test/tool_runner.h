@@ -66,6 +66,16 @@ exists (const std::string& path)
   return std::ifstream (path).good();
 }
 
+/** Whether the file \a path starts with the PNG signature. */
+inline bool
+isPNGFile (const std::string& path)
+{
+  std::ifstream file (path, std::ios::binary);
+  char signature[8] = {};
+  file.read (signature, 8);
+  return file && std::string (signature, 8) == "\x89PNG\r\n\x1a\n";
+}
+
 } // namespace test
 } // namespace tda
 } // namespace pcl

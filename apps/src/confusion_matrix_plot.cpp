@@ -1,11 +1,13 @@
 #include <pcl/tda/apps/confusion_matrix_plot.h>
 #include <pcl/tda/apps/rgb_image.h>
+#include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/exceptions.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <utility>
 
 namespace pcl {
@@ -210,66 +212,17 @@ saveConfusionMatrixSVG (const std::string& path, const ConfusionPlot& plot)
 void
 saveConfusionMatrixPNG (const std::string& path, const ConfusionPlot& plot)
 {
-  constexpr int SCALE = 2;
-  const Matrix matrix = matrixOf (plot);
-  const double char_width = static_cast<double> (RGBImage::textWidth ("x", SCALE)) +
-                            SCALE; // with the gap to the next character
-  const Layout layout =
-      layoutOf (matrix,
-                plot.title.size(),
-                char_width,
-                static_cast<double> (RGBImage::textHeight (SCALE) + 6));
-  RGBImage image (static_cast<std::size_t> (std::ceil (layout.width)),
-                  static_cast<std::size_t> (std::ceil (layout.height)),
-                  {255, 255, 255});
-  const RGB black{0, 0, 0}, grid{153, 153, 153};
-  const auto cell = static_cast<long> (layout.cell);
-  const auto left = static_cast<long> (layout.left),
-             top = static_cast<long> (layout.top);
-  const auto line = static_cast<long> (layout.line);
-  const long matrix_width = cell * static_cast<long> (matrix.column_labels.size());
-  const long matrix_height = cell * static_cast<long> (matrix.row_labels.size());
-  const long glyph_height = RGBImage::textHeight (SCALE);
-  image.text (12, 12, plot.title, black, SCALE);
-  image.text (left + (matrix_width - RGBImage::textWidth (COLUMNS_TITLE, SCALE)) / 2,
-              12 + 2 * line,
-              COLUMNS_TITLE,
-              black,
-              SCALE);
-  image.text (12,
-              top + (matrix_height + RGBImage::textWidth (ROWS_TITLE, SCALE)) / 2,
-              ROWS_TITLE,
-              black,
-              SCALE,
-              true);
-  for (std::size_t p = 0; p < matrix.column_labels.size(); ++p)
-    image.text (left + cell * static_cast<long> (p) + (cell - glyph_height) / 2,
-                top - 8,
-                matrix.column_labels[p],
-                black,
-                SCALE,
-                true);
-  for (std::size_t t = 0; t < matrix.row_labels.size(); ++t) {
-    const long y = top + cell * static_cast<long> (t);
-    image.text (left - 8 - RGBImage::textWidth (matrix.row_labels[t], SCALE),
-                y + (cell - glyph_height) / 2,
-                matrix.row_labels[t],
-                black,
-                SCALE);
-    for (std::size_t p = 0; p < matrix.column_labels.size(); ++p) {
-      const long x = left + cell * static_cast<long> (p);
-      const double share = matrix.share[t][p];
-      image.fill (x, y, cell, cell, grid);
-      image.fill (x + 1, y + 1, cell - 2, cell - 2, shade (share));
-      const std::string text = shareText (share);
-      image.text (x + (cell - RGBImage::textWidth (text, SCALE)) / 2,
-                  y + (cell - glyph_height) / 2,
-                  text,
-                  ink (share),
-                  SCALE);
-    }
+  // The SVG picture, rendered by librsvg from a scratch file beside the PNG.
+  const std::string svg = path + ".svg";
+  saveConfusionMatrixSVG (svg, plot);
+  try {
+    renderSVGToPNG (svg, path);
   }
-  image.savePNG (path);
+  catch (...) {
+    std::filesystem::remove (svg);
+    throw;
+  }
+  std::filesystem::remove (svg);
 }
 
 } // namespace tda

@@ -5,6 +5,7 @@
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
@@ -60,9 +61,12 @@ printHelp (const char* program)
   print_info ("    -csv F.csv  = also write one row per hole: its size, perimeter, "
               "area, centre,\n                  normal, birth and rim points\n");
   print_info ("    -svg F.svg  = also draw the H1 barcode of the complex\n");
-  print_info ("    -png F.png  = also draw the cloud with its rim bands (and, with "
-              "-fill, the new\n                  points) in their holes' colours, and "
-              "beside it the bands black and\n                  the new points red\n");
+  print_info (
+      "    -png F.png  = also draw the cloud with its rim bands (and, with "
+      "-fill, the new\n                  points) in their holes' colours, and "
+      "beside it the bands black and\n                  the new points red; with "
+      "-svg, the barcode as PNG beside\n                  its SVG too (B.png "
+      "for B.svg)\n");
   print_info ("    -memory M   = refuse complexes over M MiB (default: half of the "
               "memory)\n");
   print_info ("  Outputs are written only when the whole run succeeds.\n");
@@ -143,6 +147,16 @@ h1Intervals (const pcl::tda::PersistenceDiagram& diagram)
   return h1;
 }
 
+/** The PNG of the -svg barcode, beside it: written when both -svg and -png are
+ * given. */
+std::string
+barcodePNG (const Options& options)
+{
+  return options.barcode_svg.empty() || options.picture_png.empty()
+             ? std::string()
+             : pcl::tda::pngBesideSVG (options.barcode_svg);
+}
+
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
@@ -151,7 +165,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                                   {"-fill", options.filled},
                                   {"-csv", options.csv},
                                   {"-svg", options.barcode_svg},
-                                  {"-png", options.picture_png}});
+                                  {"-png", options.picture_png},
+                                  {"the PNG of -svg", barcodePNG (options)}});
   pcl::PCLPointCloud2 blob;
   console.beginStep ("Loading", options.input);
   try {
@@ -252,6 +267,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       pcl::tda::saveBarcodeSVG (outputs.temporary (options.barcode_svg),
                                 h1Intervals (estimation.getPersistenceDiagram()),
                                 plot);
+      if (!options.picture_png.empty())
+        pcl::tda::renderSVGToPNG (outputs.temporary (options.barcode_svg),
+                                  outputs.temporary (barcodePNG (options)));
     }
     if (!options.picture_png.empty()) {
       // Left: rim bands and new points in their holes' colours. Right: the surface

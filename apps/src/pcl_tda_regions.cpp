@@ -7,6 +7,7 @@
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
 #include <pcl/tda/apps/region_settings.h>
+#include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
@@ -79,8 +80,11 @@ printHelp (const char* program)
               "the memory)\n");
   print_info ("    -svg F.svg  = also draw the H0 barcode over Delta E (with the "
               "threshold)\n");
-  print_info ("    -png F.png  = also draw the cloud in its colours and in those of "
-              "its regions\n                  (no region: grey), side by side\n");
+  print_info (
+      "    -png F.png  = also draw the cloud in its colours and in those of "
+      "its regions\n                  (no region: grey), side by side; with -svg, the "
+      "barcode as PNG\n                  beside its SVG too (B.png for "
+      "B.svg)\n");
   print_info ("  Outputs are written only when the whole run succeeds.\n");
 }
 
@@ -169,13 +173,24 @@ meanColor (const Cloud& cloud, const pcl::Indices& indices)
   return sum;
 }
 
+/** The PNG of the -svg barcode, beside it: written when both -svg and -png are
+ * given. */
+std::string
+barcodePNG (const Options& options)
+{
+  return options.barcode_svg.empty() || options.picture_png.empty()
+             ? std::string()
+             : pcl::tda::pngBesideSVG (options.barcode_svg);
+}
+
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
   pcl::tda::ToolOutputs outputs (options.input,
                                  {{"output", options.output},
                                   {"-svg", options.barcode_svg},
-                                  {"-png", options.picture_png}});
+                                  {"-png", options.picture_png},
+                                  {"the PNG of -svg", barcodePNG (options)}});
   pcl::PCLPointCloud2 blob;
   console.beginStep ("Loading", options.input);
   try {
@@ -280,6 +295,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
           std::max (2.0 * plot.cut, RegionSettings::MAX_AUTO_COLOR_THRESHOLD);
       pcl::tda::saveBarcodeSVG (
           outputs.temporary (options.barcode_svg), growing.getRegionBarcode(), plot);
+      if (!options.picture_png.empty())
+        pcl::tda::renderSVGToPNG (outputs.temporary (options.barcode_svg),
+                                  outputs.temporary (barcodePNG (options)));
     }
     if (!options.picture_png.empty())
       pcl::tda::saveCloudPicture (

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+using pcl::tda::test::isPNGFile;
 using pcl::tda::test::run;
 using pcl::tda::test::RunResult;
 
@@ -118,10 +119,8 @@ TEST (HolesTool, LabelsTheRimBandsOfEveryHole)
     EXPECT_TRUE (inside) << i;
   }
   EXPECT_GT (lines (svg).size(), 3u);
-  std::ifstream picture (png, std::ios::binary);
-  char magic[4] = {};
-  picture.read (magic, 4);
-  EXPECT_EQ (std::string (magic + 1, 3), "PNG");
+  EXPECT_TRUE (isPNGFile (png));
+  EXPECT_TRUE (isPNGFile (temporaryPath ("b.png"))); // the barcode, beside its SVG
 }
 
 TEST (HolesTool, CentroidFillAndShuffledInput)

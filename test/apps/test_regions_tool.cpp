@@ -24,6 +24,7 @@
 #include <set>
 
 using namespace pcl::tda;
+using pcl::tda::test::isPNGFile;
 using pcl::tda::test::run;
 using pcl::tda::test::RunResult;
 using LabelledCloud = pcl::PointCloud<pcl::PointXYZRGBL>;
@@ -159,7 +160,8 @@ TEST (RegionsTool, SamePartitionForAShuffledInput)
     ASSERT_EQ (second[k].label, first[order[k]].label) << "point " << order[k];
 }
 
-// The barcode and the picture: an SVG with the threshold's cut, a PNG.
+// The barcode and the picture: an SVG with the threshold's cut, a PNG, and the
+// barcode as PNG too.
 TEST (RegionsTool, DrawsTheBarcodeAndThePicture)
 {
   TabletopParameters parameters;
@@ -172,12 +174,11 @@ TEST (RegionsTool, DrawsTheBarcodeAndThePicture)
   const std::string text ((std::istreambuf_iterator<char> (svg_file)), {});
   EXPECT_NE (text.find ("<svg"), std::string::npos);
   EXPECT_NE (text.find ("cut"), std::string::npos);
-  std::ifstream png_file (png, std::ios::binary);
-  char signature[8] = {};
-  png_file.read (signature, 8);
-  EXPECT_EQ (std::string (signature + 1, 3), "PNG");
-  std::remove (svg.c_str());
-  std::remove (png.c_str());
+  EXPECT_TRUE (isPNGFile (png));
+  const std::string barcode_png = temporaryPath ("bars.png"); // beside its SVG
+  EXPECT_TRUE (isPNGFile (barcode_png));
+  for (const std::string& file : {svg, png, barcode_png})
+    std::remove (file.c_str());
 }
 
 // The real coloured scans: every finite point in a region, a sensible number of

@@ -32,9 +32,10 @@ writeConfusionMatrixSVG (std::ostream& out, const ConfusionPlot& plot);
 void
 saveConfusionMatrixSVG (const std::string& path, const ConfusionPlot& plot);
 
-/** \brief The same picture as a PNG file (RGBImage, its text in the built-in
- * font), atomically.
- * \throws pcl::IOException when the file cannot be written */
+/** \brief The same picture as a PNG file, atomically, rendered from the SVG by
+ * renderSVGToPNG() (librsvg), through a scratch file \a path + ".svg" that is
+ * removed after.
+ * \throws pcl::IOException when a file cannot be written or the picture rendered */
 void
 saveConfusionMatrixPNG (const std::string& path, const ConfusionPlot& plot);
 

@@ -12,9 +12,8 @@ namespace tda {
 /** \brief An RGB colour. */
 using RGB = std::array<std::uint8_t, 3>;
 
-/** \brief An RGB picture for the tools' PNG outputs: filled rectangles and text in
- * a built-in 5 x 8 pixel font (printable ASCII; other characters are drawn as '?'),
- * saved with PCL's PNG writer. */
+/** \brief An RGB picture for the tools' PNG outputs of clouds and screenshots:
+ * pixels and filled rectangles, saved with PCL's PNG writer. */
 class RGBImage {
 public:
   /** \brief A \a width x \a height picture of colour \a background. */
@@ -44,25 +43,6 @@ public:
    * what falls outside is cut off. */
   void
   paste (const RGBImage& image, long x, long y);
-
-  /** \brief Draws \a text with its top left corner at (x, y), each font pixel a
-   * square of \a scale pixels; \a vertical: turned a quarter to the left (read from
-   * bottom to top), its bottom left corner at (x, y). */
-  void
-  text (long x,
-        long y,
-        const std::string& text,
-        const RGB& color,
-        int scale = 1,
-        bool vertical = false);
-
-  /** \brief The width in pixels of \a text at \a scale (textWidth (\"\") = 0). */
-  static long
-  textWidth (const std::string& text, int scale = 1);
-
-  /** \brief The height in pixels of a line of text at \a scale. */
-  static long
-  textHeight (int scale = 1);
 
   /** \brief Writes the picture as a PNG file, atomically.
    * \throws pcl::IOException when the file cannot be written */
