@@ -84,11 +84,12 @@ TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::computeSignature 
   if (points.size() < 2 || (radius_ == 0.0 && !(spacing > 0.0))) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has too few distinct points with a "
                "finite position and normal (%zu of %zu indexed) to describe: at "
-               "least %zu are needed.\n",
+               "least %zu are needed%s.\n",
                getClassName().c_str(),
                usable.size(),
                indices_->size(),
-               SURFACE_SPACING_NEIGHBORS + 1);
+               radius_ > 0.0 ? std::size_t{2} : SURFACE_SPACING_NEIGHBORS + 1,
+               radius_ > 0.0 ? "" : " for the radius from their spacing");
     return false;
   }
   used_radius_ = radius_ > 0.0 ? radius_ : AUTO_RADIUS_PER_SPACING * spacing;
