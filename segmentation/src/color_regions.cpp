@@ -408,7 +408,8 @@ chooseColorThreshold (const PersistenceDiagram& bars,
       events.emplace_back (bar.death, -1);
   }
   StableStep chosen;
-  if (!longestStableStep (events, floor, max_threshold, gap_ratio, true, chosen))
+  if (!chooseStableStep (
+          events, floor, max_threshold, gap_ratio, StepChoice::LONGEST, chosen))
     return choice;
   choice.low = chosen.low;
   choice.high = chosen.high;

@@ -84,7 +84,8 @@ chooseClusterDistance (const FilteredComplex& complex,
 
   // The count of significant components is a step function of the scale.
   StableStep chosen;
-  if (!longestStableStep (events, floor, max_distance, gap_ratio, false, chosen))
+  if (!chooseStableStep (
+          events, floor, max_distance, gap_ratio, StepChoice::CLEAR_OR_FINEST, chosen))
     return choice; // no significant component above the floor
   choice.low = chosen.low;
   choice.high = chosen.high;

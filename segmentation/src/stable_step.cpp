@@ -8,12 +8,12 @@ namespace pcl {
 namespace tda {
 
 bool
-longestStableStep (std::vector<std::pair<double, int>> events,
-                   double floor,
-                   double max_scale,
-                   double gap_ratio,
-                   bool censor_last,
-                   StableStep& step)
+chooseStableStep (std::vector<std::pair<double, int>> events,
+                  double floor,
+                  double max_scale,
+                  double gap_ratio,
+                  StepChoice choice,
+                  StableStep& step)
 {
   struct Step {
     double low;
@@ -36,30 +36,44 @@ longestStableStep (std::vector<std::pair<double, int>> events,
   const auto length = [] (const Step* s) {
     return s ? std::log (s->high / s->low) : 0.0;
   };
+  // The longest of the steps of a count of two or more other than \a s.
+  const auto longest_other_split = [&] (const Step* s) {
+    double longest = 0.0;
+    for (const Step& other : steps)
+      if (other.count > 1 && &other != s)
+        longest = std::max (longest, length (&other));
+    return longest;
+  };
+  const double enough = std::log (gap_ratio);
   // The longest step of a split (a count of two or more; those cut short at the end
-  // apart when censored) and of one; the earliest of equally long ones.
-  const Step *split = nullptr, *cut_short = nullptr, *whole = nullptr;
+  // apart when censored), the finest split that spans the gap ratio, and the longest
+  // step of one; the earliest of equally long ones.
+  const bool censor_last = choice == StepChoice::LONGEST;
+  const Step *split = nullptr, *cut_short = nullptr, *finest = nullptr,
+             *whole = nullptr;
   for (const Step& s : steps) {
+    if (s.count > 1 && !finest && length (&s) >= enough)
+      finest = &s;
     const Step*& best = s.count == 1                           ? whole
                         : censor_last && !(s.high < max_scale) ? cut_short
                                                                : split;
     if (length (&s) > length (best))
       best = &s;
   }
-  const double enough = std::log (gap_ratio);
   if (length (split) < enough && length (cut_short) >= enough)
     split = cut_short;
+  const auto is_clear = [&] (const Step* s) {
+    return length (s) >= enough && length (s) >= gap_ratio * longest_other_split (s);
+  };
+  if (choice == StepChoice::CLEAR_OR_FINEST && finest && !is_clear (split))
+    split = finest;
   const Step* chosen = split && (length (split) >= enough || !whole) ? split : whole;
   if (!chosen)
     return false;
-  double runner_up = 0.0;
-  for (const Step& s : steps)
-    if (s.count > 1 && &s != chosen)
-      runner_up = std::max (runner_up, length (&s));
   step.low = chosen->low;
   step.high = chosen->high;
   step.count = static_cast<std::size_t> (chosen->count);
-  step.clear = length (chosen) >= enough && length (chosen) >= gap_ratio * runner_up;
+  step.clear = is_clear (chosen);
   return true;
 }
 

@@ -153,8 +153,9 @@ struct ColorThresholdChoice {
 
 /** \brief Chooses a colour threshold from the region barcode (ColorRegions::bars):
  * the number of bars alive, i.e. of regions, is a step function of the threshold;
- * the step of longestStableStep() over [\a floor, \a max_threshold] (a step cut
- * short by max_threshold counts only when no other is long enough) is taken when it
+ * the step of chooseStableStep() (StepChoice::LONGEST) over [\a floor,
+ * \a max_threshold] (a step cut short by max_threshold counts only when no other is
+ * long enough) is taken when it
  * spans a factor of at least \a gap_ratio, and the threshold is its geometric middle
  * sqrt(low high). When no step does (the number of regions falls gradually, as on
  * scans with many shades), the threshold is \a fallback (or max_threshold when

@@ -250,9 +250,11 @@ public:
    *    never below it.
    * 3. The candidates: the steps of the count over (floor, max distance], each
    *    [low, high) measured by log(high / low). The longest step with two clusters
-   *    or more is taken if it spans a factor of at least q; otherwise the longest
-   *    step with one cluster (all points one object), if any. The earliest of
-   *    equally long steps wins.
+   *    or more is taken when it is clear (see 4.); otherwise the earliest (finest)
+   *    step with two clusters or more that spans a factor of at least q: the first
+   *    split that is stable (close objects merge at the later steps, which may
+   *    well be a little longer). When no split spans q, the longest step with one
+   *    cluster (all points one object) is taken, if any.
    * 4. The distance is the geometric middle sqrt(low high) of that step. The choice
    *    is clear when the step spans a factor of at least q and is at least q times
    *    as long (in log) as every other step with two clusters or more; otherwise
