@@ -4,7 +4,7 @@
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/persistence_diagram.h>
 #include <pcl/tda/common/progress.h>
-#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/tda/features/hole_rims.h>
 #include <pcl/tda/search/point_spacing.h>
 
@@ -51,7 +51,8 @@ namespace tda {
  * for (const auto& hole : hb.getHoles ()) ...
  * \endcode */
 template <typename PointInT, typename PointOutT>
-class HoleBoundaryEstimation : public pcl::Feature<PointInT, PointOutT> {
+class HoleBoundaryEstimation : public pcl::Feature<PointInT, PointOutT>,
+                               public ResourceSettings {
 public:
   using Ptr = shared_ptr<HoleBoundaryEstimation<PointInT, PointOutT>>;
   using ConstPtr = shared_ptr<const HoleBoundaryEstimation<PointInT, PointOutT>>;
@@ -145,34 +146,6 @@ public:
     return band_width_;
   }
 
-  /** \brief Sets the memory the complex may take, in bytes; a larger complex is
-   * refused before it is stored. Default: half of the physical memory. */
-  void
-  setMemoryLimit (std::size_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-
-  std::size_t
-  getMemoryLimit () const
-  {
-    return memory_limit_;
-  }
-
-  /** \brief Sets the number of OpenMP threads (0: OpenMP's default). The results do
-   * not depend on it. */
-  void
-  setNumberOfThreads (unsigned int threads)
-  {
-    threads_ = threads;
-  }
-
-  unsigned int
-  getNumberOfThreads () const
-  {
-    return threads_;
-  }
-
   /** \brief Sets a callback told the progress of compute(): the complex's
    * construction (the builder's thousandths), then the search of the essential
    * 1-classes, as (done, 2000). */
@@ -251,8 +224,6 @@ private:
   double max_tilt_degrees_ = DEFAULT_MAX_TILT_DEGREES;
   double band_width_ = 0.0;
   double min_hole_radius_ = 0.0;
-  std::size_t memory_limit_ = defaultMemoryLimit();
-  unsigned int threads_ = 0;
   ProgressCallback progress_;
   /** The units of each half of the progress (the builder reports thousandths). */
   static constexpr std::size_t PROGRESS_UNITS = 1000;

@@ -2,7 +2,7 @@
 
 #include <pcl/features/feature.h>
 #include <pcl/tda/common/persistence_diagram.h>
-#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/tda/features/signature_types.h>
 #include <pcl/tda/features/stpp_levels.h>
 
@@ -53,7 +53,8 @@ namespace tda {
  * stpp.getPairingVector ();               // the thesis' raw vector (Fig 6.2)
  * \endcode */
 template <typename PointInT, typename PointOutT = STPPSignature>
-class STPPEstimation : public pcl::Feature<PointInT, PointOutT> {
+class STPPEstimation : public pcl::Feature<PointInT, PointOutT>,
+                       public ResourceSettings {
 public:
   using Ptr = shared_ptr<STPPEstimation<PointInT, PointOutT>>;
   using ConstPtr = shared_ptr<const STPPEstimation<PointInT, PointOutT>>;
@@ -140,34 +141,6 @@ public:
     return scale_invariant_;
   }
 
-  /** \brief Sets the memory a level's complex may take, in bytes; a larger complex
-   * is refused before it is stored. Default: half of the physical memory. */
-  void
-  setMemoryLimit (std::size_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-
-  std::size_t
-  getMemoryLimit () const
-  {
-    return memory_limit_;
-  }
-
-  /** \brief Sets the number of OpenMP threads (0: OpenMP's default): the levels
-   * are computed in parallel. The results do not depend on it. */
-  void
-  setNumberOfThreads (unsigned int threads)
-  {
-    threads_ = threads;
-  }
-
-  unsigned int
-  getNumberOfThreads () const
-  {
-    return threads_;
-  }
-
   /** \brief Overrides pcl::Feature::compute(): one signature for the whole cloud
    * (the indexed points), as pcl::VFHEstimation gives; an empty output, with a
    * PCL_ERROR, on failure. */
@@ -228,8 +201,6 @@ private:
   std::size_t max_points_ = DEFAULT_MAX_POINTS;
   STPPHomology homology_ = STPPHomology::BETTI_0_1;
   bool scale_invariant_ = false;
-  std::size_t memory_limit_ = defaultMemoryLimit();
-  unsigned int threads_ = 0;
 
   std::vector<std::int64_t> pairing_vector_;
   std::vector<double> level_radii_;

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <pcl/features/feature.h>
-#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/tda/features/signature_types.h>
 
 #include <array>
@@ -39,7 +39,8 @@ namespace tda {
  * \endcode */
 template <typename PointInT, typename PointNT, typename PointOutT = CovarianceSignature>
 class TopologicalCovarianceEstimation
-: public pcl::FeatureFromNormals<PointInT, PointNT, PointOutT> {
+: public pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>,
+  public ResourceSettings {
 public:
   using Ptr = shared_ptr<TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>>;
   using ConstPtr =
@@ -90,33 +91,6 @@ public:
     return max_points_;
   }
 
-  /** \brief Sets the memory the complex may take, in bytes. */
-  void
-  setMemoryLimit (std::size_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-
-  std::size_t
-  getMemoryLimit () const
-  {
-    return memory_limit_;
-  }
-
-  /** \brief Sets the number of OpenMP threads of the complex builder (0: OpenMP's
-   * default). The results do not depend on it. */
-  void
-  setNumberOfThreads (unsigned int threads)
-  {
-    threads_ = threads;
-  }
-
-  unsigned int
-  getNumberOfThreads () const
-  {
-    return threads_;
-  }
-
   /** \brief Overrides pcl::Feature::compute(): one signature for the whole cloud
    * (the indexed points); an empty output, with a PCL_ERROR, on failure. */
   void
@@ -151,8 +125,6 @@ private:
 
   double radius_ = 0.0;
   std::size_t max_points_ = DEFAULT_MAX_POINTS;
-  std::size_t memory_limit_ = defaultMemoryLimit();
-  unsigned int threads_ = 0;
   double used_radius_ = 0.0;
 };
 

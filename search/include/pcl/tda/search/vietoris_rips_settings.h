@@ -1,7 +1,7 @@
 #pragma once
 
 #include <pcl/tda/common/progress.h>
-#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/common/resource_settings.h>
 
 #include <cstddef>
 
@@ -12,7 +12,7 @@ namespace tda {
  * for this module's VietorisRipsBuilder and the gpu/ module's
  * gpu::VietorisRipsBuilder, which take the same settings and build the same
  * complex from them. */
-class VietorisRipsSettings {
+class VietorisRipsSettings : public ResourceSettings {
 public:
   /** \brief Sets the radius r of VR_r: the largest edge length (> 0). */
   void
@@ -41,36 +41,6 @@ public:
     return max_dimension_;
   }
 
-  /** \brief Sets the memory the complex may take, in bytes (device memory when
-   * gpu::VietorisRipsBuilder runs on CUDA); a larger complex is refused before
-   * allocation. Default: half of the physical memory (no limit where it cannot be
-   * read). */
-  void
-  setMemoryLimit (std::size_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-
-  std::size_t
-  getMemoryLimit () const
-  {
-    return memory_limit_;
-  }
-
-  /** \brief Sets the number of OpenMP threads of every phase (0: OpenMP's default);
-   * the complex does not depend on it. */
-  void
-  setNumberOfThreads (unsigned int threads)
-  {
-    threads_ = threads;
-  }
-
-  unsigned int
-  getNumberOfThreads () const
-  {
-    return threads_;
-  }
-
   /** \brief Sets a callback told the progress of a build in thousandths (done,
    * 1000), from one thread, e.g. to drive a ProgressBar: long builds are not
    * silent. */
@@ -83,8 +53,6 @@ public:
 protected:
   double radius_ = 0.0;
   int max_dimension_ = 2;
-  std::size_t memory_limit_ = defaultMemoryLimit();
-  unsigned int threads_ = 0;
   ProgressCallback progress_;
 };
 

@@ -3,7 +3,7 @@
 #include <pcl/search/search.h>
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/persistence_result.h>
-#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/pcl_base.h>
 #include <pcl/PointIndices.h>
 
@@ -95,7 +95,8 @@ chooseClusterDistance (const FilteredComplex& complex,
  * \endcode
  */
 template <typename PointT>
-class PersistentEuclideanClusterExtraction : public pcl::PCLBase<PointT> {
+class PersistentEuclideanClusterExtraction : public pcl::PCLBase<PointT>,
+                                             public ResourceSettings {
 public:
   using Ptr = shared_ptr<PersistentEuclideanClusterExtraction<PointT>>;
   using ConstPtr = shared_ptr<const PersistentEuclideanClusterExtraction<PointT>>;
@@ -312,36 +313,6 @@ public:
    * limit is checked against it before the edges are stored. */
   static constexpr std::size_t BYTES_PER_EDGE = sizeof (FilteredEdge);
 
-  /** \brief Sets the memory the radius graph may take, in bytes; a larger graph is
-   * refused in bounded time before it is stored (far over: from a sample of the
-   * points; otherwise after an exact count). Default: half of the physical memory
-   * (no limit where it cannot be read). */
-  void
-  setMemoryLimit (std::size_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-
-  std::size_t
-  getMemoryLimit () const
-  {
-    return memory_limit_;
-  }
-
-  /** \brief Sets the number of OpenMP threads of the radius graph build (0: OpenMP's
-   * default). The results do not depend on it. */
-  void
-  setNumberOfThreads (unsigned int threads)
-  {
-    threads_ = threads;
-  }
-
-  unsigned int
-  getNumberOfThreads () const
-  {
-    return threads_;
-  }
-
   /** \brief Extracts the clusters of the input points (or of the indexed ones).
    * On failure (no input, no finite point, max distance not positive and finite,
    * min size above max size, a bad gap ratio, a graph over the memory limit)
@@ -424,8 +395,6 @@ private:
   bool auto_max_distance_ = false;
   double gap_ratio_ = DEFAULT_GAP_RATIO;
   double auto_min_distance_ = 0.0;
-  unsigned int threads_ = 0;
-  std::size_t memory_limit_ = defaultMemoryLimit();
 
   PersistenceDiagram diagram_;
   double chosen_distance_ = 0.0;

@@ -3,7 +3,7 @@
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/persistence_diagram.h>
 #include <pcl/tda/common/progress.h>
-#include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/tda/segmentation/color_regions.h>
 #include <pcl/tda/segmentation/homogeneity_graph.h>
 #include <pcl/pcl_base.h>
@@ -74,7 +74,8 @@ namespace tda {
  * \endcode
  */
 template <typename PointT, typename NormalT = pcl::Normal>
-class PersistentRegionGrowingRGB : public pcl::PCLBase<PointT> {
+class PersistentRegionGrowingRGB : public pcl::PCLBase<PointT>,
+                                   public ResourceSettings {
 public:
   using Ptr = shared_ptr<PersistentRegionGrowingRGB<PointT, NormalT>>;
   using ConstPtr = shared_ptr<const PersistentRegionGrowingRGB<PointT, NormalT>>;
@@ -391,35 +392,6 @@ public:
     return gap_ratio_;
   }
 
-  /** \brief Sets the memory the neighbour graph may take, in bytes (BYTES_PER_EDGE
-   * per edge); a larger graph is refused before it is stored. Default: half of the
-   * physical memory. */
-  void
-  setMemoryLimit (std::size_t bytes)
-  {
-    memory_limit_ = bytes;
-  }
-
-  std::size_t
-  getMemoryLimit () const
-  {
-    return memory_limit_;
-  }
-
-  /** \brief Sets the number of OpenMP threads (0: OpenMP's default). The results do
-   * not depend on it. */
-  void
-  setNumberOfThreads (unsigned int threads)
-  {
-    threads_ = threads;
-  }
-
-  unsigned int
-  getNumberOfThreads () const
-  {
-    return threads_;
-  }
-
   /** \brief Sets a callback told the progress of the graph's construction, the
    * longest phase. */
   void
@@ -541,8 +513,6 @@ private:
   bool auto_color_threshold_ = false;
   double auto_min_color_threshold_ = DEFAULT_AUTO_MIN_COLOR_THRESHOLD;
   double gap_ratio_ = DEFAULT_GAP_RATIO;
-  std::size_t memory_limit_ = defaultMemoryLimit();
-  unsigned int threads_ = 0;
   ProgressCallback progress_;
 
   PersistenceDiagram diagram_;

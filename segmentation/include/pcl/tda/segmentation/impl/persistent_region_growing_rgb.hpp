@@ -7,6 +7,7 @@
 #include <pcl/tda/common/h0_persistence.h>
 #include <pcl/tda/common/persistent_components.h>
 #include <pcl/tda/common/spanning_forest.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/segmentation/persistent_region_growing_rgb.h>
 
 #include <algorithm>
