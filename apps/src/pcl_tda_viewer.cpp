@@ -362,6 +362,183 @@ loadLabelScene (const Options& options, pcl::tda::ToolConsole& console, Scene& s
   return true;
 }
 
+/** The parts of the window that the keys change. */
+struct ViewerLayout {
+  /** The viewport of the cloud (0: the whole window). */
+  int cloud_viewport = 0;
+  /** The barcode beside the cloud, in -barcode mode. */
+  std::unique_ptr<pcl::tda::BarcodeOverlay> overlay;
+  /** The filtration radius shown, in -barcode mode. */
+  double radius = 0.0;
+};
+
+/** Puts \a scene into \a viewer: in -barcode mode the cloud's viewport and the
+ * barcode's beside it, the clouds (one colouring per key 1, 2, ...), the new points
+ * of -fill and the text overlay. */
+ViewerLayout
+addScene (pcl::visualization::PCLVisualizer& viewer,
+          const Options& options,
+          Scene& scene)
+{
+  ViewerLayout layout;
+  layout.radius = options.at;
+  if (scene.filtration) {
+    int barcode_viewport = 0;
+    viewer.createViewPort (0.0, 0.0, 0.62, 1.0, layout.cloud_viewport);
+    viewer.createViewPort (0.62, 0.0, 1.0, 1.0, barcode_viewport);
+    viewer.setBackgroundColor (0.12, 0.12, 0.12, barcode_viewport);
+    // PCLVisualizer's viewport n is the n-th renderer of its collection.
+    layout.overlay = std::make_unique<pcl::tda::BarcodeOverlay> (
+        static_cast<vtkRenderer*> (
+            viewer.getRendererCollection()->GetItemAsObject (barcode_viewport)),
+        scene.filtration->diagram(),
+        options.radius);
+    layout.overlay->setRadius (layout.radius);
+    atRadius (scene, layout.radius);
+  }
+  // Colour handlers of blobs, the kind that PCLVisualizer keeps several of per cloud
+  // for the keys 1, 2, ... to switch between.
+  for (const ColorCloud::Ptr& colors : scene.colorings) {
+    pcl::PCLPointCloud2::Ptr blob (new pcl::PCLPointCloud2);
+    pcl::toPCLPointCloud2 (*colors, *blob);
+    viewer.addPointCloud (
+        blob,
+        std::make_shared<
+            pcl::visualization::PointCloudGeometryHandlerXYZ<pcl::PCLPointCloud2>> (
+            blob),
+        std::make_shared<
+            pcl::visualization::PointCloudColorHandlerRGBField<pcl::PCLPointCloud2>> (
+            blob),
+        colors->sensor_origin_,
+        colors->sensor_orientation_,
+        "cloud",
+        layout.cloud_viewport);
+  }
+  viewer.setPointCloudRenderingProperties (
+      pcl::visualization::PCL_VISUALIZER_POINT_SIZE, POINT_SIZE, "cloud");
+  if (scene.extra) {
+    viewer.addPointCloud<pcl::PointXYZRGB> (
+        scene.extra, RGBHandler (scene.extra), "new points", layout.cloud_viewport);
+    viewer.setPointCloudRenderingProperties (
+        pcl::visualization::PCL_VISUALIZER_POINT_SIZE, 2 * POINT_SIZE, "new points");
+  }
+  viewer.addText (scene.text,
+                  TEXT_X,
+                  TEXT_Y,
+                  FONT_SIZE,
+                  1.0,
+                  1.0,
+                  1.0,
+                  "overlay",
+                  layout.cloud_viewport);
+  print_info ("%s\n", scene.text.c_str());
+  return layout;
+}
+
+/** Places the camera: around the clouds, or as -camera says, and sizes the window.
+ * \return false, with a message, when -camera cannot be used */
+bool
+placeCamera (pcl::visualization::PCLVisualizer& viewer,
+             const Options& options,
+             pcl::tda::ToolConsole& console)
+{
+  viewer.initCameraParameters();
+  viewer.resetCamera();
+  if (!options.camera.empty()) {
+    char program[] = "pcl_tda_viewer", option[] = "-cam";
+    std::vector<char> value (options.camera.begin(), options.camera.end());
+    value.push_back ('\0');
+    char* arguments[] = {program, option, value.data()};
+    if (!viewer.getCameraParameters (3, arguments)) {
+      console.error (
+          "Cannot use the camera of -camera '" + options.camera +
+          "': give a readable .cam file (as Ctrl+S saves them) or a line of one, "
+          "near,far/x,y,z/x,y,z/x,y,z/fovy/width,height/x,y.");
+      return false;
+    }
+  }
+  if (options.width > 0)
+    viewer.setSize (options.width, options.height);
+  else if (!options.screenshot.empty() && options.camera.empty())
+    viewer.setSize (SCREENSHOT_WIDTH, SCREENSHOT_HEIGHT);
+  return true;
+}
+
+/** Renders \a viewer off-screen into the picture of -screenshot.
+ * \return the exit code */
+int
+saveScreenshot (pcl::visualization::PCLVisualizer& viewer,
+                const Options& options,
+                pcl::tda::ToolOutputs& outputs,
+                pcl::tda::ToolConsole& console)
+{
+  console.beginStep ("Rendering", options.screenshot);
+  try {
+    pcl::tda::saveWindowPicture (viewer.getRenderWindow(),
+                                 outputs.temporary (options.screenshot));
+    outputs.commit();
+  }
+  catch (const std::exception& error) {
+    console.error (pcl::tda::errorMessage (error));
+    return 1;
+  }
+  const int* size = viewer.getRenderWindow()->GetSize();
+  console.endStep (std::to_string (size[0]) + " x " + std::to_string (size[1]) +
+                   " pixels");
+  return 0;
+}
+
+/** Runs the window until it is closed: the mouse and keys of pcl_viewer, h for the
+ * help, and in -barcode mode Left and Right to step the radius. */
+void
+interact (pcl::visualization::PCLVisualizer& viewer,
+          const Options& options,
+          Scene& scene,
+          ViewerLayout& layout)
+{
+  const std::string help =
+      "h: this help (again: hide it); mouse and keys as in pcl_viewer:\n"
+      "left drag: rotate, wheel: zoom, r: reset the camera, +/-: point size,\n"
+      "j: save a screenshot, c: print the camera, Ctrl+S: save it, q: quit\n" +
+      scene.help;
+  bool help_shown = false;
+  viewer.registerKeyboardCallback (
+      [&] (const pcl::visualization::KeyboardEvent& event) {
+        if (!event.keyDown())
+          return;
+        const std::string key = event.getKeySym();
+        if (key == "h") {
+          help_shown = !help_shown;
+          if (help_shown)
+            viewer.addText (help,
+                            TEXT_X,
+                            TEXT_Y + 3 * FONT_SIZE,
+                            FONT_SIZE,
+                            1.0,
+                            1.0,
+                            0.6,
+                            "help",
+                            layout.cloud_viewport);
+          else
+            viewer.removeShape ("help", layout.cloud_viewport);
+        }
+        else if (scene.filtration && (key == "Left" || key == "Right")) {
+          const double step = options.radius / STEPS;
+          layout.radius = std::clamp (
+              layout.radius + (key == "Right" ? step : -step), 0.0, options.radius);
+          atRadius (scene, layout.radius);
+          viewer.updatePointCloud<pcl::PointXYZRGB> (
+              scene.colorings.front(), RGBHandler (scene.colorings.front()), "cloud");
+          layout.overlay->setRadius (layout.radius);
+          viewer.updateText (
+              scene.text, TEXT_X, TEXT_Y, FONT_SIZE, 1.0, 1.0, 1.0, "overlay");
+          print_info ("%s\n", scene.text.c_str());
+        }
+      });
+  std::fflush (stdout); // the overlay's text, for scripts, before the window opens
+  viewer.spin();
+}
+
 /** Shows \a scene: in a window until it is closed, or off-screen into the picture
  * of -screenshot.
  * \return the exit code */
@@ -382,131 +559,12 @@ show (const Options& options,
     actors->InitTraversal();
     actors->GetNextActor2D()->VisibilityOff();
   }
-  int cloud_viewport = 0;
-  std::unique_ptr<pcl::tda::BarcodeOverlay> overlay;
-  double radius = options.at;
-  if (scene.filtration) {
-    int barcode_viewport = 0;
-    viewer.createViewPort (0.0, 0.0, 0.62, 1.0, cloud_viewport);
-    viewer.createViewPort (0.62, 0.0, 1.0, 1.0, barcode_viewport);
-    viewer.setBackgroundColor (0.12, 0.12, 0.12, barcode_viewport);
-    // PCLVisualizer's viewport n is the n-th renderer of its collection.
-    overlay = std::make_unique<pcl::tda::BarcodeOverlay> (
-        static_cast<vtkRenderer*> (
-            viewer.getRendererCollection()->GetItemAsObject (barcode_viewport)),
-        scene.filtration->diagram(),
-        options.radius);
-    overlay->setRadius (radius);
-    atRadius (scene, radius);
-  }
-  // Colour handlers of blobs, the kind that PCLVisualizer keeps several of per cloud
-  // for the keys 1, 2, ... to switch between.
-  for (const ColorCloud::Ptr& colors : scene.colorings) {
-    pcl::PCLPointCloud2::Ptr blob (new pcl::PCLPointCloud2);
-    pcl::toPCLPointCloud2 (*colors, *blob);
-    viewer.addPointCloud (
-        blob,
-        std::make_shared<
-            pcl::visualization::PointCloudGeometryHandlerXYZ<pcl::PCLPointCloud2>> (
-            blob),
-        std::make_shared<
-            pcl::visualization::PointCloudColorHandlerRGBField<pcl::PCLPointCloud2>> (
-            blob),
-        colors->sensor_origin_,
-        colors->sensor_orientation_,
-        "cloud",
-        cloud_viewport);
-  }
-  viewer.setPointCloudRenderingProperties (
-      pcl::visualization::PCL_VISUALIZER_POINT_SIZE, POINT_SIZE, "cloud");
-  if (scene.extra) {
-    viewer.addPointCloud<pcl::PointXYZRGB> (
-        scene.extra, RGBHandler (scene.extra), "new points", cloud_viewport);
-    viewer.setPointCloudRenderingProperties (
-        pcl::visualization::PCL_VISUALIZER_POINT_SIZE, 2 * POINT_SIZE, "new points");
-  }
-  viewer.addText (
-      scene.text, TEXT_X, TEXT_Y, FONT_SIZE, 1.0, 1.0, 1.0, "overlay", cloud_viewport);
-  print_info ("%s\n", scene.text.c_str());
-
-  viewer.initCameraParameters();
-  viewer.resetCamera();
-  if (!options.camera.empty()) {
-    char program[] = "pcl_tda_viewer", option[] = "-cam";
-    std::vector<char> value (options.camera.begin(), options.camera.end());
-    value.push_back ('\0');
-    char* arguments[] = {program, option, value.data()};
-    if (!viewer.getCameraParameters (3, arguments)) {
-      console.error (
-          "Cannot use the camera of -camera '" + options.camera +
-          "': give a readable .cam file (as Ctrl+S saves them) or a line of one, "
-          "near,far/x,y,z/x,y,z/x,y,z/fovy/width,height/x,y.");
-      return 1;
-    }
-  }
-  if (options.width > 0)
-    viewer.setSize (options.width, options.height);
-  else if (screenshot && options.camera.empty())
-    viewer.setSize (SCREENSHOT_WIDTH, SCREENSHOT_HEIGHT);
-
-  if (screenshot) {
-    console.beginStep ("Rendering", options.screenshot);
-    try {
-      pcl::tda::saveWindowPicture (viewer.getRenderWindow(),
-                                   outputs.temporary (options.screenshot));
-      outputs.commit();
-    }
-    catch (const std::exception& error) {
-      console.error (pcl::tda::errorMessage (error));
-      return 1;
-    }
-    const int* size = viewer.getRenderWindow()->GetSize();
-    console.endStep (std::to_string (size[0]) + " x " + std::to_string (size[1]) +
-                     " pixels");
-    return 0;
-  }
-
-  const std::string help =
-      "h: this help (again: hide it); mouse and keys as in pcl_viewer:\n"
-      "left drag: rotate, wheel: zoom, r: reset the camera, +/-: point size,\n"
-      "j: save a screenshot, c: print the camera, Ctrl+S: save it, q: quit\n" +
-      scene.help;
-  bool help_shown = false;
-  viewer.registerKeyboardCallback ([&] (
-                                       const pcl::visualization::KeyboardEvent& event) {
-    if (!event.keyDown())
-      return;
-    const std::string key = event.getKeySym();
-    if (key == "h") {
-      help_shown = !help_shown;
-      if (help_shown)
-        viewer.addText (help,
-                        TEXT_X,
-                        TEXT_Y + 3 * FONT_SIZE,
-                        FONT_SIZE,
-                        1.0,
-                        1.0,
-                        0.6,
-                        "help",
-                        cloud_viewport);
-      else
-        viewer.removeShape ("help", cloud_viewport);
-    }
-    else if (scene.filtration && (key == "Left" || key == "Right")) {
-      const double step = options.radius / STEPS;
-      radius =
-          std::clamp (radius + (key == "Right" ? step : -step), 0.0, options.radius);
-      atRadius (scene, radius);
-      viewer.updatePointCloud<pcl::PointXYZRGB> (
-          scene.colorings.front(), RGBHandler (scene.colorings.front()), "cloud");
-      overlay->setRadius (radius);
-      viewer.updateText (
-          scene.text, TEXT_X, TEXT_Y, FONT_SIZE, 1.0, 1.0, 1.0, "overlay");
-      print_info ("%s\n", scene.text.c_str());
-    }
-  });
-  std::fflush (stdout); // the overlay's text, for scripts, before the window opens
-  viewer.spin();
+  ViewerLayout layout = addScene (viewer, options, scene);
+  if (!placeCamera (viewer, options, console))
+    return 1;
+  if (screenshot)
+    return saveScreenshot (viewer, options, outputs, console);
+  interact (viewer, options, scene, layout);
   return 0;
 }
 
