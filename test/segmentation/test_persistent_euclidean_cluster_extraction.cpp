@@ -533,6 +533,16 @@ autoScaleScenes (std::uint64_t first_seed, float min_gap)
   return scenes;
 }
 
+/** The best F1 of the tolerances of a sweep. */
+double
+bestF1 (const std::vector<pcl::tda::test::ObjectScores>& sweep)
+{
+  double best = 0.0;
+  for (const auto& scores : sweep)
+    best = std::max (best, scores.f1());
+  return best;
+}
+
 } // namespace
 
 /** Runs the automatic distance on \a scene; true when it gives one cluster per
@@ -614,9 +624,7 @@ TEST (PersistentEuclideanClusterExtraction, AutoDistanceF1OnOurGenerator)
           pclEuclideanClusters<pcl::PointXYZ> (cloud, 0.01 * (k + 1), 32),
           FIRST_OBJECT_LABEL));
   }
-  double best = 0.0;
-  for (const auto& scores : sweep)
-    best = std::max (best, scores.f1());
+  const double best = bestF1 (sweep);
   std::cout << "object-level F1: automatic " << all.f1() << " (noise <= 4 mm "
             << low_noise.f1() << "), best ECE tolerance " << best << std::endl;
   EXPECT_EQ (low_noise.f1(), 1.0);
@@ -654,9 +662,7 @@ TEST (PersistentEuclideanClusterExtraction, AutoDistanceDepthCameraScenes)
           pclEuclideanClusters<pcl::PointXYZ> (cloud, 0.0025 * (k + 1), 20),
           DEPTH_FIRST_OBJECT_LABEL));
   }
-  double best = 0.0;
-  for (const auto& scores : sweep)
-    best = std::max (best, scores.f1());
+  const double best = bestF1 (sweep);
   std::cout << "depth camera object-level F1: automatic " << automatic.f1()
             << ", best ECE tolerance " << best << std::endl;
   EXPECT_GE (automatic.f1(), best - 0.02);
@@ -688,9 +694,7 @@ TEST (PersistentEuclideanClusterExtraction, AutoDistanceRealObjectScenes)
       sweep[k].add (pcl::tda::test::scoreObjects (
           labels, pclEuclideanClusters<pcl::PointXYZ> (cloud, tolerances[k], 20), 1));
   }
-  double best = 0.0;
-  for (const auto& scores : sweep)
-    best = std::max (best, scores.f1());
+  const double best = bestF1 (sweep);
   std::cout << "real-object scenes, object-level F1: automatic " << automatic.f1()
             << ", best ECE tolerance " << best << std::endl;
   EXPECT_GE (automatic.f1(), best - 0.02);
