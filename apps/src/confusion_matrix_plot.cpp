@@ -89,8 +89,10 @@ ink (double share)
   return share > 0.5 ? RGB{255, 255, 255} : RGB{0, 0, 0};
 }
 
-/** Where things go, in pixels, for text of characters \a char_width wide and lines
- * \a line_height high, under a title of \a title_characters characters. */
+/** The SVG's text: 12 px monospace, characters about 7.2 px wide, lines 15 px. */
+constexpr double CHAR_WIDTH = 7.2, LINE_HEIGHT = 15;
+
+/** Where things go, in pixels, under a title of \a title_characters characters. */
 struct Layout {
   double cell, left, top, width, height, line;
 };
@@ -105,26 +107,23 @@ longest (const std::vector<std::string>& labels)
 }
 
 Layout
-layoutOf (const Matrix& matrix,
-          std::size_t title_characters,
-          double char_width,
-          double line_height)
+layoutOf (const Matrix& matrix, std::size_t title_characters)
 {
   constexpr double MARGIN = 12;
   Layout layout;
-  layout.line = line_height;
-  layout.cell = std::max (56.0, char_width * 4 + 16);
+  layout.line = LINE_HEIGHT;
+  layout.cell = std::max (56.0, CHAR_WIDTH * 4 + 16);
   // Title, the columns' title, then the column labels turned upright.
-  layout.top = MARGIN + 2 * line_height + line_height +
-               char_width * static_cast<double> (longest (matrix.column_labels)) + 8;
+  layout.top = MARGIN + 3 * LINE_HEIGHT +
+               CHAR_WIDTH * static_cast<double> (longest (matrix.column_labels)) + 8;
   // The rows' title turned upright, then the row labels.
-  layout.left = MARGIN + line_height + 8 +
-                char_width * static_cast<double> (longest (matrix.row_labels)) + 8;
+  layout.left = MARGIN + LINE_HEIGHT + 8 +
+                CHAR_WIDTH * static_cast<double> (longest (matrix.row_labels)) + 8;
   const double columns = static_cast<double> (matrix.column_labels.size());
   const double rows = static_cast<double> (matrix.row_labels.size());
   layout.width =
       std::max (layout.left + layout.cell * columns + MARGIN,
-                2 * MARGIN + char_width * static_cast<double> (title_characters));
+                2 * MARGIN + CHAR_WIDTH * static_cast<double> (title_characters));
   layout.height = layout.top + layout.cell * rows + MARGIN;
   return layout;
 }
@@ -161,8 +160,7 @@ void
 writeConfusionMatrixSVG (std::ostream& out, const ConfusionPlot& plot)
 {
   const Matrix matrix = matrixOf (plot);
-  // 12 px monospace: characters about 7.2 px wide.
-  const Layout layout = layoutOf (matrix, plot.title.size(), 7.2, 15);
+  const Layout layout = layoutOf (matrix, plot.title.size());
   out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << layout.width
       << "\" height=\"" << layout.height << "\" font-family=\"monospace\" "
       << "font-size=\"12\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";

@@ -147,26 +147,18 @@ h1Intervals (const pcl::tda::PersistenceDiagram& diagram)
   return h1;
 }
 
-/** The PNG of the -svg barcode, beside it: written when both -svg and -png are
- * given. */
-std::string
-barcodePNG (const Options& options)
-{
-  return options.barcode_svg.empty() || options.picture_png.empty()
-             ? std::string()
-             : pcl::tda::pngBesideSVG (options.barcode_svg);
-}
-
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
+  const std::string barcode_png =
+      pcl::tda::pngBesideSVGWithPNG (options.barcode_svg, options.picture_png);
   pcl::tda::ToolOutputs outputs (options.input,
                                  {{"output", options.output},
                                   {"-fill", options.filled},
                                   {"-csv", options.csv},
                                   {"-svg", options.barcode_svg},
                                   {"-png", options.picture_png},
-                                  {"the PNG of -svg", barcodePNG (options)}});
+                                  {"the PNG of -svg", barcode_png}});
   pcl::PCLPointCloud2 blob;
   console.beginStep ("Loading", options.input);
   try {
@@ -267,9 +259,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       pcl::tda::saveBarcodeSVG (outputs.temporary (options.barcode_svg),
                                 h1Intervals (estimation.getPersistenceDiagram()),
                                 plot);
-      if (!options.picture_png.empty())
+      if (!barcode_png.empty())
         pcl::tda::renderSVGToPNG (outputs.temporary (options.barcode_svg),
-                                  outputs.temporary (barcodePNG (options)));
+                                  outputs.temporary (barcode_png));
     }
     if (!options.picture_png.empty()) {
       // Left: rim bands and new points in their holes' colours. Right: the surface

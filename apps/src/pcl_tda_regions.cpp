@@ -173,24 +173,16 @@ meanColor (const Cloud& cloud, const pcl::Indices& indices)
   return sum;
 }
 
-/** The PNG of the -svg barcode, beside it: written when both -svg and -png are
- * given. */
-std::string
-barcodePNG (const Options& options)
-{
-  return options.barcode_svg.empty() || options.picture_png.empty()
-             ? std::string()
-             : pcl::tda::pngBesideSVG (options.barcode_svg);
-}
-
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
+  const std::string barcode_png =
+      pcl::tda::pngBesideSVGWithPNG (options.barcode_svg, options.picture_png);
   pcl::tda::ToolOutputs outputs (options.input,
                                  {{"output", options.output},
                                   {"-svg", options.barcode_svg},
                                   {"-png", options.picture_png},
-                                  {"the PNG of -svg", barcodePNG (options)}});
+                                  {"the PNG of -svg", barcode_png}});
   pcl::PCLPointCloud2 blob;
   console.beginStep ("Loading", options.input);
   try {
@@ -295,9 +287,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
           std::max (2.0 * plot.cut, RegionSettings::MAX_AUTO_COLOR_THRESHOLD);
       pcl::tda::saveBarcodeSVG (
           outputs.temporary (options.barcode_svg), growing.getRegionBarcode(), plot);
-      if (!options.picture_png.empty())
+      if (!barcode_png.empty())
         pcl::tda::renderSVGToPNG (outputs.temporary (options.barcode_svg),
-                                  outputs.temporary (barcodePNG (options)));
+                                  outputs.temporary (barcode_png));
     }
     if (!options.picture_png.empty())
       pcl::tda::saveCloudPicture (

@@ -23,6 +23,12 @@ pngBesideSVG (const std::string& svg_path)
   return svg_path + ".png";
 }
 
+std::string
+pngBesideSVGWithPNG (const std::string& svg_path, const std::string& png_path)
+{
+  return svg_path.empty() || png_path.empty() ? std::string() : pngBesideSVG (svg_path);
+}
+
 void
 renderSVGToPNG (const std::string& svg_path, const std::string& png_path)
 {

@@ -91,8 +91,8 @@ makeRealObjectScene (const std::vector<Cloud::Ptr>& scans, std::uint64_t seed)
   std::uniform_real_distribution<float> spot (-0.5f * AREA, 0.5f * AREA);
   std::normal_distribution<float> gaussian;
 
-  pcl::PointCloud<pcl::PointXYZRGBL> scene;
-  Cloud::Ptr placed (new Cloud);
+  using LabelledCloud = pcl::PointCloud<pcl::PointXYZRGBL>;
+  const LabelledCloud::Ptr scene (new LabelledCloud);
   const int objects = num_objects (random);
   for (int object = 0; object < objects; ++object) {
     const Cloud& scan = *scans[which (random)];
@@ -101,35 +101,35 @@ makeRealObjectScene (const std::vector<Cloud::Ptr>& scans, std::uint64_t seed)
     rotation.normalize();
     const Cloud view =
         randomView (scan, count (random), rotation, diagonal (random), random);
-    pcl::search::KdTree<pcl::PointXYZ> tree;
-    if (!placed->empty())
-      tree.setInputCloud (placed);
+    pcl::search::KdTree<pcl::PointXYZRGBL> tree;
+    if (!scene->empty())
+      tree.setInputCloud (scene);
     for (int attempt = 0; attempt < PLACEMENT_ATTEMPTS; ++attempt) {
       const Eigen::Vector3f offset (spot (random), spot (random), 0.0f);
       pcl::Indices nearest (1);
       std::vector<float> squared (1);
-      const bool clear = std::all_of (view.begin(), view.end(), [&] (auto point) {
-        point.getVector3fMap() += offset;
-        return placed->empty() ||
-               tree.nearestKSearch (point, 1, nearest, squared) < 1 ||
-               squared[0] >= MIN_GAP * MIN_GAP;
-      });
+      pcl::PointXYZRGBL moved;
+      const bool clear =
+          std::all_of (view.begin(), view.end(), [&] (const auto& point) {
+            moved.getVector3fMap() = point.getVector3fMap() + offset;
+            return scene->empty() ||
+                   tree.nearestKSearch (moved, 1, nearest, squared) < 1 ||
+                   squared[0] >= MIN_GAP * MIN_GAP;
+          });
       if (!clear)
         continue;
       const auto label =
-          static_cast<std::uint32_t> (placed->empty() ? 1 : scene.back().label + 1);
-      for (auto point : view) {
-        point.getVector3fMap() += offset;
-        placed->push_back (point);
+          static_cast<std::uint32_t> (scene->empty() ? 1 : scene->back().label + 1);
+      for (const auto& point : view) {
         pcl::PointXYZRGBL labelled;
-        labelled.getVector3fMap() = point.getVector3fMap();
+        labelled.getVector3fMap() = point.getVector3fMap() + offset;
         labelled.label = label;
-        scene.push_back (labelled);
+        scene->push_back (labelled);
       }
       break;
     }
   }
-  return scene;
+  return *scene;
 }
 
 } // namespace test
