@@ -1,6 +1,6 @@
-#include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/tda/common/spanning_forest.h>
 #include <pcl/tda/common/union_find.h>
+#include <pcl/tda/search/nearest_neighbors.h>
 #include <pcl/tda/segmentation/color_regions.h>
 #include <pcl/tda/segmentation/stable_step.h>
 #include <pcl/point_cloud.h>
@@ -274,46 +274,35 @@ void
 attachIsolatedPoints (const std::vector<Point3d>& points,
                       const std::vector<LabColor>& colors,
                       std::size_t k,
+                      unsigned int threads,
                       ColorRegions& regions)
 {
-  pcl::PointCloud<pcl::PointXYZ>::Ptr labelled (new pcl::PointCloud<pcl::PointXYZ>);
-  std::vector<std::uint32_t> vertex_of;
-  std::vector<std::uint32_t> isolated;
-  for (std::uint32_t v = 0; v < points.size(); ++v) {
-    if (regions.region_of[v] == NO_REGION) {
-      isolated.push_back (v);
-      continue;
-    }
-    labelled->push_back (pcl::PointXYZ (static_cast<float> (points[v][0]),
-                                        static_cast<float> (points[v][1]),
-                                        static_cast<float> (points[v][2])));
-    vertex_of.push_back (v);
-  }
-  if (isolated.empty() || labelled->empty())
+  std::vector<std::uint32_t> labelled, isolated;
+  for (std::uint32_t v = 0; v < points.size(); ++v)
+    (regions.region_of[v] == NO_REGION ? isolated : labelled).push_back (v);
+  if (isolated.empty() || labelled.empty())
     return;
-  pcl::KdTreeFLANN<pcl::PointXYZ> tree;
-  tree.setInputCloud (labelled);
-  const int num_neighbors = static_cast<int> (std::min (k, labelled->size()));
-  pcl::Indices neighbors;
+  const std::size_t num_neighbors = std::min (k, labelled.size());
+  std::vector<std::uint32_t> neighbors;
   std::vector<float> squared_distances;
-  std::vector<std::uint32_t> joined (isolated.size());
+  NearestNeighbors (floatCoordinates (points, labelled))
+      .search (floatCoordinates (points, isolated),
+               num_neighbors,
+               threads,
+               neighbors,
+               squared_distances);
   for (std::size_t i = 0; i < isolated.size(); ++i) {
     const std::uint32_t v = isolated[i];
-    const pcl::PointXYZ query (static_cast<float> (points[v][0]),
-                               static_cast<float> (points[v][1]),
-                               static_cast<float> (points[v][2]));
-    tree.nearestKSearch (query, num_neighbors, neighbors, squared_distances);
+    const auto row = neighbors.begin() + i * num_neighbors;
     // The most similar colour; of equal ones, the nearest (the search's order).
-    std::uint32_t best = vertex_of[neighbors.front()];
-    for (const auto neighbor : neighbors) {
-      const std::uint32_t w = vertex_of[neighbor];
+    std::uint32_t best = labelled[*row];
+    for (auto neighbor = row; neighbor != row + num_neighbors; ++neighbor) {
+      const std::uint32_t w = labelled[*neighbor];
       if (deltaE76 (colors[v], colors[w]) < deltaE76 (colors[v], colors[best]))
         best = w;
     }
-    joined[i] = regions.region_of[best];
+    regions.region_of[v] = regions.region_of[best];
   }
-  for (std::size_t i = 0; i < isolated.size(); ++i)
-    regions.region_of[isolated[i]] = joined[i];
 }
 
 std::vector<FilteredEdge>

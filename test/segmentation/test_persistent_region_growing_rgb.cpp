@@ -440,7 +440,7 @@ TEST (PersistentRegionGrowingRGB, MinNeighborsJoinSparseRows)
     points.push_back ({p.x, p.y, p.z});
   std::vector<FilteredEdge> graph = radiusGraph (points, 0.003);
   const std::size_t radius_edges = graph.size();
-  addNearestNeighbors (points, 0.003, 5, graph);
+  addNearestNeighbors (points, 0.003, 5, 0, graph);
   ASSERT_GT (graph.size(), radius_edges);
   expectEdgesOnceAddedBeyond (graph, radius_edges, 0.003);
 }
@@ -493,6 +493,46 @@ TEST (PersistentRegionGrowingRGB, ImageNeighborsJoinTheRowsOfADepthFrame)
   // From every pixel to the three below it, within each surface (7 + 3 pairs of
   // rows), but at the rows' ends and around the lost pixel.
   EXPECT_EQ (graph.size() - radius_edges, 10 * (3 * width - 2) - 6);
-  addNearestNeighbors (points, 0.003, 5, graph);
+  addNearestNeighbors (points, 0.003, 5, 0, graph);
   expectEdgesOnceAddedBeyond (graph, radius_edges, 0.003);
+}
+
+// medianSmoothedColors() with no limit on the change: each vertex takes, channel by
+// channel, the median of its own colour and its neighbours' (the upper middle value of
+// an even count), computed here by sorting. Random graphs whose degrees (0-45) cover
+// each way the function takes (up to 16 colours, up to 32, more); 1 and 2 threads.
+TEST (PersistentRegionGrowingRGB, MedianSmoothingTakesTheMedianOfEachChannel)
+{
+  std::mt19937 random (23);
+  std::uniform_real_distribution<float> channel (-100.0f, 100.0f);
+  for (int trial = 0; trial < 20; ++trial) {
+    const std::size_t num_vertices = 20 + random() % 80;
+    std::vector<LabColor> colors (num_vertices);
+    for (LabColor& color : colors)
+      color = {channel (random), channel (random), channel (random)};
+    std::vector<FilteredEdge> graph;
+    for (SimplexIndex v = 0; v < num_vertices; ++v)
+      for (SimplexIndex w = v + 1; w < num_vertices; ++w)
+        if (random() % 100 < 3u + 2u * trial)
+          graph.push_back ({v, w, 0.0});
+    const NeighborLists lists = neighborLists (num_vertices, graph);
+    const std::vector<LabColor> one = medianSmoothedColors (colors, lists, 1e9f, 1);
+    const std::vector<LabColor> two = medianSmoothedColors (colors, lists, 1e9f, 2);
+    for (SimplexIndex v = 0; v < num_vertices; ++v) {
+      std::vector<SimplexIndex> members = {v};
+      members.insert (members.end(),
+                      lists.neighbors.begin() + lists.offsets[v],
+                      lists.neighbors.begin() + lists.offsets[v + 1]);
+      for (float LabColor::*part : {&LabColor::l, &LabColor::a, &LabColor::b}) {
+        std::vector<float> values;
+        for (const SimplexIndex member : members)
+          values.push_back (colors[member].*part);
+        std::sort (values.begin(), values.end());
+        EXPECT_EQ (one[v].*part, values[values.size() / 2])
+            << "trial " << trial << " vertex " << v << " of degree "
+            << members.size() - 1;
+        EXPECT_EQ (two[v].*part, one[v].*part);
+      }
+    }
+  }
 }

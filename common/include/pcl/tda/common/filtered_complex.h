@@ -29,13 +29,19 @@ struct FilteredEdge {
 };
 
 /** \brief The filtration order of edges: by (value, source, target). A strict total
- * order on distinct edges, so that any correct sort gives the same list. */
-inline bool
-edgeFiltrationLess (const FilteredEdge& a, const FilteredEdge& b)
-{
-  return std::tie (a.value, a.source, a.target) <
-         std::tie (b.value, b.source, b.target);
-}
+ * order on distinct edges, so that any correct sort gives the same list. A function
+ * object rather than a function, so that the sorts that take it inline it. */
+struct EdgeFiltrationLess {
+  bool
+  operator() (const FilteredEdge& a, const FilteredEdge& b) const
+  {
+    return std::tie (a.value, a.source, a.target) <
+           std::tie (b.value, b.source, b.target);
+  }
+};
+
+/** \brief The filtration order of edges (EdgeFiltrationLess). */
+constexpr EdgeFiltrationLess edgeFiltrationLess{};
 
 /** \brief A triangle of a filtered complex: its three edge ids in decreasing
  * filtration order (edges[0] is the youngest) and its filtration value (for a

@@ -1,24 +1,33 @@
 #pragma once
 
 #include <pcl/common/point_tests.h>
-#include <pcl/search/kdtree.h>
 #include <pcl/point_cloud.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
-#include <tuple>
 #include <vector>
 
 namespace pcl {
 namespace tda {
 
+/** \brief The spacing of points given as x, y, z triples (\a xyz, all finite) in
+ * (x, y, z) order: see pointSpacing(). */
+double
+sortedPointSpacing (std::vector<float> xyz,
+                    double quantile,
+                    std::size_t k,
+                    std::size_t max_samples,
+                    unsigned int threads);
+
 /** \brief The spacing of a cloud's points: the \a quantile (in (0, 1]) of the
  * distances from each point to its \a k -th nearest other point, over the finite
  * points (at most \a max_samples of them, evenly spread in (x, y, z) order, so that
  * the cost is bounded on large clouds and the value does not depend on the input
- * order). Points at the same position are skipped. 0
- * when there are fewer than k + 1 distinct finite points.
+ * order), searched with \a threads OpenMP threads (0: OpenMP's default). Points at
+ * the same position are skipped. 0 when there are fewer than k + 1 distinct finite
+ * points.
  *
  * With k = 1 and the median it is the typical sampling distance. A larger k follows
  * sampling that is denser along one direction than across it (the scan lines of a
@@ -28,43 +37,20 @@ double
 pointSpacing (const pcl::PointCloud<PointT>& cloud,
               double quantile = 0.5,
               std::size_t k = 1,
-              std::size_t max_samples = 2000)
+              std::size_t max_samples = 2000,
+              unsigned int threads = 0)
 {
-  typename pcl::PointCloud<PointT>::Ptr finite (new pcl::PointCloud<PointT>);
+  std::vector<std::array<float, 3>> finite;
+  finite.reserve (cloud.size());
   for (const PointT& point : cloud)
     if (pcl::isXYZFinite (point))
-      finite->push_back (point);
-  // The sample is taken in (x, y, z) order, so that the spacing does not depend on
-  // the input order.
-  std::sort (finite->begin(), finite->end(), [] (const PointT& a, const PointT& b) {
-    return std::tie (a.x, a.y, a.z) < std::tie (b.x, b.y, b.z);
-  });
-  if (finite->size() < 2 || k == 0)
-    return 0.0;
-  pcl::search::KdTree<PointT> tree;
-  tree.setInputCloud (finite);
-  const std::size_t stride = std::max<std::size_t> (1, finite->size() / max_samples);
-  std::vector<double> spacings;
-  pcl::Indices neighbors;
-  std::vector<float> squared_distances;
-  for (std::size_t i = 0; i < finite->size(); i += stride) {
-    // Enough neighbours to step over a few duplicates of the point.
-    const auto wanted = static_cast<int> (std::min (k + 8, finite->size()));
-    tree.nearestKSearch ((*finite)[i], wanted, neighbors, squared_distances);
-    const auto first = std::find_if (squared_distances.begin(),
-                                     squared_distances.end(),
-                                     [] (float d) { return d > 0.0f; });
-    if (static_cast<std::size_t> (squared_distances.end() - first) >= k)
-      spacings.push_back (std::sqrt (static_cast<double> (*(first + (k - 1)))));
-  }
-  if (spacings.empty())
-    return 0.0;
-  const auto rank = static_cast<std::size_t> (std::max (
-      std::ceil (quantile * static_cast<double> (spacings.size())) - 1.0, 0.0));
-  std::nth_element (spacings.begin(),
-                    spacings.begin() + std::min (rank, spacings.size() - 1),
-                    spacings.end());
-  return spacings[std::min (rank, spacings.size() - 1)];
+      finite.push_back ({point.x, point.y, point.z});
+  std::sort (finite.begin(), finite.end());
+  std::vector<float> xyz;
+  xyz.reserve (3 * finite.size());
+  for (const auto& point : finite)
+    xyz.insert (xyz.end(), point.begin(), point.end());
+  return sortedPointSpacing (std::move (xyz), quantile, k, max_samples, threads);
 }
 
 /** \brief How many nearest neighbours measure a surface's spacing. */
@@ -77,12 +63,14 @@ constexpr std::size_t SURFACE_SPACING_NEIGHBORS = 6;
  * regular the sampling is (a jittered grid and a random sample of the same density
  * give the same value), nor on scan lines that are denser along than across. 0 when
  * the cloud has fewer than k + 1 distinct finite points. At most \a max_samples
- * points are measured (see pointSpacing()). */
+ * points are measured, with \a threads OpenMP threads (see pointSpacing()). */
 template <typename PointT>
 double
-surfaceSpacing (const pcl::PointCloud<PointT>& cloud, std::size_t max_samples = 2000)
+surfaceSpacing (const pcl::PointCloud<PointT>& cloud,
+                std::size_t max_samples = 2000,
+                unsigned int threads = 0)
 {
-  return pointSpacing (cloud, 0.5, SURFACE_SPACING_NEIGHBORS, max_samples) *
+  return pointSpacing (cloud, 0.5, SURFACE_SPACING_NEIGHBORS, max_samples, threads) *
          std::sqrt (M_PI / static_cast<double> (SURFACE_SPACING_NEIGHBORS));
 }
 

@@ -97,12 +97,15 @@ mergeSmallRegions (const std::vector<FilteredEdge>& graph,
  * \param[in] points position of every vertex
  * \param[in] colors CIELAB colour of every vertex
  * \param[in] k the nearest points considered (>= 1)
+ * \param[in] threads OpenMP threads of the search (0: OpenMP's default); the result
+ * does not depend on them
  * \param[in,out] regions the regions; on return every vertex has one, unless no
  * vertex has any */
 void
 attachIsolatedPoints (const std::vector<Point3d>& points,
                       const std::vector<LabColor>& colors,
                       std::size_t k,
+                      unsigned int threads,
                       ColorRegions& regions);
 
 /** \brief The region adjacency graph of a segmentation, valued by colour: an edge

@@ -81,7 +81,7 @@ addImageNeighbors (const std::vector<Point3d>& points,
                    std::vector<FilteredEdge>& graph);
 
 /** \brief Joins the points that have fewer than \a k neighbours in the radius graph
- * to their 3 k nearest points (k-d tree), so that sparse parts of a cloud stay
+ * to their 3 k nearest points (NearestNeighbors), so that sparse parts of a cloud stay
  * connected: the far side of a depth frame, where rows of points lie farther apart
  * than the radius (3 k, since the k nearest may all lie along the point's row). Adds
  * the edges (valued by length, ends in increasing order) that are not in the graph
@@ -89,11 +89,14 @@ addImageNeighbors (const std::vector<Point3d>& points,
  * addImageNeighbors()); dense parts are left as they are.
  * Deterministic. \param[in] points the points, vertex v at points[v] \param[in] radius
  * the radius of \a graph \param[in] k the fewest neighbours of a point (0: nothing to
- * do) \param[in,out] graph the radius graph (neighborGraph()), extended */
+ * do) \param[in] threads OpenMP threads of the search (0: OpenMP's default); the
+ * result does not depend on them \param[in,out] graph the radius graph
+ * (neighborGraph()), extended */
 void
 addNearestNeighbors (const std::vector<Point3d>& points,
                      double radius,
                      std::size_t k,
+                     unsigned int threads,
                      std::vector<FilteredEdge>& graph);
 
 /** \brief The neighbour lists of a graph in compressed sparse row form: the

@@ -222,7 +222,7 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
                        image_neighbor_ratio_,
                        graph);
   }
-  addNearestNeighbors (vertices.points, max_distance_, min_neighbors_, graph);
+  addNearestNeighbors (vertices.points, max_distance_, min_neighbors_, threads_, graph);
   const bool estimate_normals = estimate_normals_ && !normals_;
   if (color_smoothing_ || estimate_normals) {
     const NeighborLists lists = neighborLists (n, graph);
@@ -254,7 +254,8 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
   if (merge_small_regions_) {
     mergeSmallRegions (
         graph, forest, vertices.colors, threshold, min_pts_per_cluster_, found);
-    attachIsolatedPoints (vertices.points, vertices.colors, ISOLATED_NEIGHBORS, found);
+    attachIsolatedPoints (
+        vertices.points, vertices.colors, ISOLATED_NEIGHBORS, threads_, found);
   }
 
   // The second: adjacent patches of similar mean colour.
