@@ -20,9 +20,6 @@ namespace tda {
 
 namespace {
 
-/** How often steps 2-4 of Alg 5.15 may tighten one cycle. */
-constexpr int MAX_REFINEMENTS = 4;
-
 /** The spanning forest of the negative edges, rooted at the first vertex of each
  * tree, so that the path between two vertices of a tree costs its own length. */
 class RootedForest {
@@ -156,21 +153,47 @@ emptyRegions (const ProjectedPolygon& polygon,
 /** Steps 2-4 of Alg 5.15 for one class at a time, with per-vertex scratch arrays
  * reset by a stamp (one object per thread). */
 class RimFinder {
+private:
+  /** What the searches know of a vertex, together so that a visit reads one cache
+   * line. Marks hold the generation_ of the cycle they were made for. */
+  struct VertexState {
+    Eigen::Vector2d projected;           // in the plane of the polygon
+    std::uint32_t in_region = 0;         // mark: in the region
+    std::uint32_t outside = 0;           // mark: found outside the polygon
+    std::uint32_t position_in_cycle = 0; // 1-based, 0: not on the cycle
+    std::uint32_t local = 0;             // index in the region
+  };
+
+  /** The edges a cycle through a region may take: per vertex of the region (by its
+   * index in the region), its neighbours in the region joined to it by an edge of
+   * the cycle or a chord, in the order of the adjacency lists, with the edges'
+   * lengths. Built once per region, then walked by every search in it. */
+  struct RegionGraph {
+    struct Arc {
+      std::uint32_t head;
+      double length;
+    };
+    std::vector<std::size_t> offsets;
+    std::vector<Arc> arcs;
+  };
+
 public:
-  RimFinder (const FilteredComplex& complex,
-             const EdgeAdjacency& graph,
+  /** \param[in] graph the adjacency lists of the complex
+   * \param[in] lengths per entry of \a graph, the length of its edge
+   * \param[in] positions the position of every vertex
+   * \param[in] min_cell the smallest cell of the grids of empty regions
+   * \param[in] min_clearance the radius of the smallest empty disk of a hole */
+  RimFinder (const EdgeAdjacency& graph,
+             const std::vector<double>& lengths,
              const std::vector<Point3d>& positions,
              double min_cell,
              double min_clearance)
-  : complex_ (complex)
-  , graph_ (graph)
+  : graph_ (graph)
+  , lengths_ (lengths)
   , positions_ (positions)
   , min_cell_ (min_cell)
   , min_clearance_ (min_clearance)
-  , stamp_ (positions.size(), 0)
-  , position_in_cycle_ (positions.size(), 0)
-  , projected_ (positions.size())
-  , local_ (positions.size(), 0)
+  , vertices_ (positions.size())
   {}
 
   /** The rims around the empty regions inside the polygon of \a cycle, each
@@ -206,34 +229,29 @@ private:
     std::vector<SimplexIndex> region = cycle;
     std::vector<Eigen::Vector2d> corners;
     for (std::size_t i = 0; i < cycle.size(); ++i) {
-      stamp_[cycle[i]] = generation_;
-      position_in_cycle_[cycle[i]] = static_cast<std::uint32_t> (i + 1);
-      projected_[cycle[i]] = polygon.project (positions_[cycle[i]]);
-      corners.push_back (projected_[cycle[i]]);
+      VertexState& vertex = vertices_[cycle[i]];
+      vertex.in_region = generation_;
+      vertex.position_in_cycle = static_cast<std::uint32_t> (i + 1);
+      vertex.projected = polygon.project (positions_[cycle[i]]);
+      corners.push_back (vertex.projected);
     }
-    for (std::size_t head = 0; head < region.size(); ++head)
-      for (const auto& entry : graph_.neighbors (region[head])) {
-        const SimplexIndex w = entry.neighbor;
-        if (stamp_[w] == generation_)
-          continue;
-        const Eigen::Vector2d q = polygon.project (positions_[w]);
-        if (!polygon.contains (q))
-          continue;
-        stamp_[w] = generation_;
-        position_in_cycle_[w] = 0;
-        projected_[w] = q;
-        region.push_back (w);
-      }
+    fillRegion (polygon, region);
     std::vector<Eigen::Vector2d> region_points;
     region_points.reserve (region.size());
-    for (const SimplexIndex v : region)
-      region_points.push_back (projected_[v]);
+    for (std::size_t i = 0; i < region.size(); ++i) {
+      vertices_[region[i]].local = static_cast<std::uint32_t> (i);
+      region_points.push_back (vertices_[region[i]].projected);
+    }
     std::vector<MinimalCycle> result;
-    for (const EmptyPoint& hole :
-         emptyRegions (polygon, corners, region_points, min_cell_, min_clearance_)) {
+    const std::vector<EmptyPoint> holes =
+        emptyRegions (polygon, corners, region_points, min_cell_, min_clearance_);
+    if (holes.empty())
+      return result;
+    buildRegionGraph (polygon, region);
+    for (const EmptyPoint& hole : holes) {
       MinimalCycle rim;
       rim.essential_edge = essential_edge;
-      rim.vertices = windingCycle (polygon, region, hole.position);
+      rim.vertices = windingCycle (region_graph_, region, region_points, hole.position);
       rim.clearance = hole.clearance;
       const Eigen::Vector3d center = polygon.centroid() +
                                      hole.position.x() * polygon.axisU() +
@@ -245,14 +263,60 @@ private:
     return result;
   }
 
-  bool
-  admissible (const ProjectedPolygon& polygon, SimplexIndex a, SimplexIndex b) const
+  /** Adds to \a region (the cycle, stamped) the vertices inside \a polygon that are
+   * reached from it through edges without leaving the polygon. A vertex found
+   * outside is marked, so that it is tested once. */
+  void
+  fillRegion (const ProjectedPolygon& polygon, std::vector<SimplexIndex>& region)
   {
-    const std::uint32_t first = std::min (position_in_cycle_[a], position_in_cycle_[b]);
-    const std::uint32_t last = std::max (position_in_cycle_[a], position_in_cycle_[b]);
+    for (std::size_t head = 0; head < region.size(); ++head)
+      for (const auto& entry : graph_.neighbors (region[head])) {
+        const SimplexIndex w = entry.neighbor;
+        VertexState& vertex = vertices_[w];
+        if (vertex.in_region == generation_ || vertex.outside == generation_)
+          continue;
+        const Eigen::Vector2d q = polygon.project (positions_[w]);
+        if (!polygon.contains (q)) {
+          vertex.outside = generation_;
+          continue;
+        }
+        vertex.in_region = generation_;
+        vertex.position_in_cycle = 0;
+        vertex.projected = q;
+        region.push_back (w);
+      }
+  }
+
+  /** Fills region_graph_ with the graph of \a region (its vertices marked and
+   * numbered in vertices_) that the searches for cycles in \a polygon walk. */
+  void
+  buildRegionGraph (const ProjectedPolygon& polygon,
+                    const std::vector<SimplexIndex>& region)
+  {
+    region_graph_.offsets.assign (1, 0);
+    region_graph_.arcs.clear();
+    for (const SimplexIndex v : region) {
+      for (std::size_t k = graph_.offsets[v]; k < graph_.offsets[v + 1]; ++k) {
+        const VertexState& w = vertices_[graph_.entries[k].neighbor];
+        if (w.in_region == generation_ && admissible (polygon, vertices_[v], w))
+          region_graph_.arcs.push_back ({w.local, lengths_[k]});
+      }
+      region_graph_.offsets.push_back (region_graph_.arcs.size());
+    }
+  }
+
+  /** True when the edge between region vertices \a a and \a b is an edge of the
+   * cycle or a chord of \a polygon. */
+  bool
+  admissible (const ProjectedPolygon& polygon,
+              const VertexState& a,
+              const VertexState& b) const
+  {
+    const std::uint32_t first = std::min (a.position_in_cycle, b.position_in_cycle);
+    const std::uint32_t last = std::max (a.position_in_cycle, b.position_in_cycle);
     if (first != 0 && (first + 1 == last || (first == 1 && last == cycle_length_)))
       return true; // an edge of the cycle itself (the last closes it)
-    return polygon.contains ((projected_[a] + projected_[b]) / 2.0);
+    return polygon.contains ((a.projected + b.projected) / 2.0);
   }
 
   /** True when the segment from \a a to \a b crosses the ray from \a p along the
@@ -267,22 +331,20 @@ private:
   }
 
   /** The shortest closed path through the region that winds around \a p an odd
-   * number of times: Dijkstra on two copies of the region (the parity of the
-   * crossings of a ray from \a p), from the region's vertex nearest to \a p to its
-   * copy. */
-  std::vector<SimplexIndex>
-  windingCycle (const ProjectedPolygon& polygon,
+   * number of times: Dijkstra on two copies of the region's graph (the parity of
+   * the crossings of a ray from \a p), from the region's vertex nearest to \a p to
+   * its copy. \a points are the region's vertices in the plane. */
+  static std::vector<SimplexIndex>
+  windingCycle (const RegionGraph& graph,
                 const std::vector<SimplexIndex>& region,
+                const std::vector<Eigen::Vector2d>& points,
                 const Eigen::Vector2d& p)
   {
     std::size_t start = 0;
-    for (std::size_t i = 1; i < region.size(); ++i)
-      if ((projected_[region[i]] - p).squaredNorm() <
-          (projected_[region[start]] - p).squaredNorm())
+    for (std::size_t i = 1; i < points.size(); ++i)
+      if ((points[i] - p).squaredNorm() < (points[start] - p).squaredNorm())
         start = i;
-    // Local ids: the region's vertices, each in two copies (parity 0 and 1).
-    for (std::size_t i = 0; i < region.size(); ++i)
-      local_[region[i]] = static_cast<std::uint32_t> (i);
+    // Ids: the region's vertices, each in two copies (parity 0 and 1).
     const std::size_t n = region.size();
     std::vector<double> distance (2 * n, std::numeric_limits<double>::infinity());
     std::vector<std::uint32_t> previous (2 * n,
@@ -301,14 +363,12 @@ private:
       if (id == target)
         break;
       const std::uint32_t parity = id >= n ? 1 : 0;
-      const SimplexIndex v = region[id - parity * n];
-      for (const auto& entry : graph_.neighbors (v)) {
-        const SimplexIndex w = entry.neighbor;
-        if (stamp_[w] != generation_ || !admissible (polygon, v, w))
-          continue;
-        const std::uint32_t flip = crossesRay (projected_[v], projected_[w], p) ? 1 : 0;
-        const auto next = static_cast<std::uint32_t> (local_[w] + (parity ^ flip) * n);
-        const double through = d + complex_.edges()[entry.edge].value;
+      const std::size_t v = id - parity * n;
+      for (std::size_t arc = graph.offsets[v]; arc < graph.offsets[v + 1]; ++arc) {
+        const std::uint32_t w = graph.arcs[arc].head;
+        const std::uint32_t flip = crossesRay (points[v], points[w], p) ? 1 : 0;
+        const auto next = static_cast<std::uint32_t> (w + (parity ^ flip) * n);
+        const double through = d + graph.arcs[arc].length;
         if (through < distance[next]) {
           distance[next] = through;
           previous[next] = id;
@@ -326,17 +386,15 @@ private:
     return cycle;
   }
 
-  const FilteredComplex& complex_;
   const EdgeAdjacency& graph_;
+  const std::vector<double>& lengths_;
   const std::vector<Point3d>& positions_;
   double min_cell_;
   double min_clearance_;
   std::uint32_t generation_ = 0;
-  std::vector<std::uint32_t> stamp_;
-  std::vector<std::uint32_t> position_in_cycle_; // 1-based, 0: not on the cycle
-  std::vector<Eigen::Vector2d> projected_;
-  std::vector<std::uint32_t> local_; // a region vertex's index in the region
+  std::vector<VertexState> vertices_;
   std::uint32_t cycle_length_ = 0;
+  RegionGraph region_graph_; // kept between cycles for its storage
 };
 
 } // namespace
@@ -368,12 +426,16 @@ minimalCycles (const FilteredComplex& complex,
         return !result.edge_positive[e];
       }));
   const auto count = static_cast<std::int64_t> (essential.size());
+  // The searches read the edges' lengths along the adjacency lists, not at random.
+  std::vector<double> lengths (adjacency.entries.size());
+  for (std::size_t k = 0; k < lengths.size(); ++k)
+    lengths[k] = edges[adjacency.entries[k].edge].value;
   std::atomic<std::size_t> done{0};
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
     // Cells of a quarter of the smallest clearance sought: fine enough to tell it.
     RimFinder finder (
-        complex, adjacency, positions, min_clearance / 4.0, min_clearance);
+        adjacency, lengths, positions, min_clearance / 4.0, min_clearance);
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < count; ++i) {
       const SimplexIndex e = essential[i];
