@@ -157,17 +157,17 @@ private:
   /** What the searches know of a vertex, together so that a visit reads one cache
    * line. Marks hold the generation_ of the cycle they were made for. */
   struct VertexState {
-    Eigen::Vector2d projected;           // in the plane of the polygon
-    std::uint32_t in_region = 0;         // mark: in the region
-    std::uint32_t outside = 0;           // mark: found outside the polygon
-    std::uint32_t position_in_cycle = 0; // 1-based, 0: not on the cycle
-    std::uint32_t local = 0;             // index in the region
+    Eigen::Vector2d projected;   // in the plane of the polygon
+    std::uint32_t in_region = 0; // mark: in the region
+    std::uint32_t outside = 0;   // mark: found outside the polygon
+    std::uint32_t local = 0;     // number in the region (the cycle's first)
   };
 
   /** The edges a cycle through a region may take: per vertex of the region (by its
    * index in the region), its neighbours in the region joined to it by an edge of
    * the cycle or a chord, in the order of the adjacency lists, with the edges'
-   * lengths. Built once per region, then walked by every search in it. */
+   * lengths. Built once per region, then walked by every search in it; kept
+   * between regions for its storage. */
   struct RegionGraph {
     struct Arc {
       std::uint32_t head;
@@ -231,23 +231,21 @@ private:
     for (std::size_t i = 0; i < cycle.size(); ++i) {
       VertexState& vertex = vertices_[cycle[i]];
       vertex.in_region = generation_;
-      vertex.position_in_cycle = static_cast<std::uint32_t> (i + 1);
+      vertex.local = static_cast<std::uint32_t> (i);
       vertex.projected = polygon.project (positions_[cycle[i]]);
       corners.push_back (vertex.projected);
     }
     fillRegion (polygon, region);
     std::vector<Eigen::Vector2d> region_points;
     region_points.reserve (region.size());
-    for (std::size_t i = 0; i < region.size(); ++i) {
-      vertices_[region[i]].local = static_cast<std::uint32_t> (i);
-      region_points.push_back (vertices_[region[i]].projected);
-    }
+    for (const SimplexIndex v : region)
+      region_points.push_back (vertices_[v].projected);
     std::vector<MinimalCycle> result;
     const std::vector<EmptyPoint> holes =
         emptyRegions (polygon, corners, region_points, min_cell_, min_clearance_);
     if (holes.empty())
       return result;
-    buildRegionGraph (polygon, region);
+    keepCycleEdgesAndChords (polygon, region, region_points);
     for (const EmptyPoint& hole : holes) {
       MinimalCycle rim;
       rim.essential_edge = essential_edge;
@@ -263,60 +261,76 @@ private:
     return result;
   }
 
-  /** Adds to \a region (the cycle, stamped) the vertices inside \a polygon that are
-   * reached from it through edges without leaving the polygon. A vertex found
+  /** Adds to \a region (the cycle, marked) the vertices inside \a polygon that are
+   * reached from it through edges without leaving the polygon, numbering them in
+   * order, and fills region_graph_ with all edges between them. A vertex found
    * outside is marked, so that it is tested once. */
   void
   fillRegion (const ProjectedPolygon& polygon, std::vector<SimplexIndex>& region)
   {
-    for (std::size_t head = 0; head < region.size(); ++head)
-      for (const auto& entry : graph_.neighbors (region[head])) {
-        const SimplexIndex w = entry.neighbor;
-        VertexState& vertex = vertices_[w];
-        if (vertex.in_region == generation_ || vertex.outside == generation_)
-          continue;
-        const Eigen::Vector2d q = polygon.project (positions_[w]);
-        if (!polygon.contains (q)) {
-          vertex.outside = generation_;
-          continue;
-        }
-        vertex.in_region = generation_;
-        vertex.position_in_cycle = 0;
-        vertex.projected = q;
-        region.push_back (w);
-      }
-  }
-
-  /** Fills region_graph_ with the graph of \a region (its vertices marked and
-   * numbered in vertices_) that the searches for cycles in \a polygon walk. */
-  void
-  buildRegionGraph (const ProjectedPolygon& polygon,
-                    const std::vector<SimplexIndex>& region)
-  {
     region_graph_.offsets.assign (1, 0);
     region_graph_.arcs.clear();
-    for (const SimplexIndex v : region) {
+    for (std::size_t head = 0; head < region.size(); ++head) {
+      const SimplexIndex v = region[head];
       for (std::size_t k = graph_.offsets[v]; k < graph_.offsets[v + 1]; ++k) {
-        const VertexState& w = vertices_[graph_.entries[k].neighbor];
-        if (w.in_region == generation_ && admissible (polygon, vertices_[v], w))
-          region_graph_.arcs.push_back ({w.local, lengths_[k]});
+        const SimplexIndex w = graph_.entries[k].neighbor;
+        VertexState& vertex = vertices_[w];
+        if (vertex.outside == generation_)
+          continue;
+        if (vertex.in_region != generation_) {
+          const Eigen::Vector2d q = polygon.project (positions_[w]);
+          if (!polygon.contains (q)) {
+            vertex.outside = generation_;
+            continue;
+          }
+          vertex.in_region = generation_;
+          vertex.local = static_cast<std::uint32_t> (region.size());
+          vertex.projected = q;
+          region.push_back (w);
+        }
+        region_graph_.arcs.push_back ({vertex.local, lengths_[k]});
       }
       region_graph_.offsets.push_back (region_graph_.arcs.size());
     }
   }
 
-  /** True when the edge between region vertices \a a and \a b is an edge of the
-   * cycle or a chord of \a polygon. */
+  /** Keeps in region_graph_ the edges of the cycle and the chords of \a polygon,
+   * the edges that cycles in it may take. */
+  void
+  keepCycleEdgesAndChords (const ProjectedPolygon& polygon,
+                           const std::vector<SimplexIndex>& region,
+                           const std::vector<Eigen::Vector2d>& points)
+  {
+    std::vector<std::size_t>& offsets = region_graph_.offsets;
+    std::vector<RegionGraph::Arc>& arcs = region_graph_.arcs;
+    std::size_t kept = 0;
+    for (std::size_t head = 0, first = 0; head < region.size(); ++head) {
+      // A vertex twice on the cycle is numbered by its last place.
+      const std::uint32_t v = vertices_[region[head]].local;
+      const std::size_t last = offsets[head + 1];
+      for (std::size_t arc = first; arc < last; ++arc)
+        if (admissible (polygon, points, v, arcs[arc].head))
+          arcs[kept++] = arcs[arc];
+      first = last;
+      offsets[head + 1] = kept;
+    }
+    arcs.resize (kept);
+  }
+
+  /** True when the edge between the region's vertices numbered \a a and \a b (at
+   * \a points) is an edge of the cycle or a chord of \a polygon. */
   bool
   admissible (const ProjectedPolygon& polygon,
-              const VertexState& a,
-              const VertexState& b) const
+              const std::vector<Eigen::Vector2d>& points,
+              std::uint32_t a,
+              std::uint32_t b) const
   {
-    const std::uint32_t first = std::min (a.position_in_cycle, b.position_in_cycle);
-    const std::uint32_t last = std::max (a.position_in_cycle, b.position_in_cycle);
-    if (first != 0 && (first + 1 == last || (first == 1 && last == cycle_length_)))
+    // The cycle's vertices are numbered first, in cycle order.
+    const std::uint32_t first = std::min (a, b), last = std::max (a, b);
+    if (last < cycle_length_ &&
+        (first + 1 == last || (first == 0 && last + 1 == cycle_length_)))
       return true; // an edge of the cycle itself (the last closes it)
-    return polygon.contains ((a.projected + b.projected) / 2.0);
+    return polygon.contains ((points[a] + points[b]) / 2.0);
   }
 
   /** True when the segment from \a a to \a b crosses the ray from \a p along the
@@ -394,7 +408,7 @@ private:
   std::uint32_t generation_ = 0;
   std::vector<VertexState> vertices_;
   std::uint32_t cycle_length_ = 0;
-  RegionGraph region_graph_; // kept between cycles for its storage
+  RegionGraph region_graph_;
 };
 
 } // namespace
