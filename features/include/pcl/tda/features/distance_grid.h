@@ -2,7 +2,9 @@
 
 #include <Eigen/Core>
 
+#include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace pcl {
@@ -57,18 +59,42 @@ public:
   distance (int ix, int iy) const;
 
 private:
-  void
-  offer (std::uint32_t seed, int ix, int iy);
+  static constexpr std::uint32_t NO_SEED = std::numeric_limits<std::uint32_t>::max();
 
-  std::uint32_t
-  nearestAt (int ix, int iy) const;
+  /** The cells take their neighbours' nearest seeds, in two passes. */
+  void
+  propagate ();
+
+  /** The position of cell (\a ix, \a iy) in the arrays, which have a border of
+   * cells without a seed around the grid. */
+  std::size_t
+  index (int ix, int iy) const
+  {
+    return (static_cast<std::size_t> (iy) + 1) * stride_ +
+           static_cast<std::size_t> (ix) + 1;
+  }
+
+  /** Makes \a seed the nearest seed of the cell at \a cell (centred at \a at) when
+   * it is nearer than the cell's. */
+  void
+  offer (std::uint32_t seed, std::size_t cell, const Eigen::Vector2d& at)
+  {
+    if (seed == nearest_[cell] || seed == NO_SEED)
+      return;
+    const double squared = (seeds_[seed] - at).squaredNorm();
+    if (squared < squared_distance_[cell]) {
+      squared_distance_[cell] = squared;
+      nearest_[cell] = seed;
+    }
+  }
 
   Eigen::Vector2d low_;
   double cell_;
   int nx_ = 0;
   int ny_ = 0;
+  std::size_t stride_ = 0; // cells per row of the arrays
   const std::vector<Eigen::Vector2d>& seeds_;
-  std::vector<std::uint32_t> nearest_;
+  std::vector<std::uint32_t> nearest_;   // or NO_SEED
   std::vector<double> squared_distance_; // to the nearest seed
 };
 
