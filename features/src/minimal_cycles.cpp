@@ -305,8 +305,10 @@ private:
     std::vector<RegionGraph::Arc>& arcs = region_graph_.arcs;
     std::size_t kept = 0;
     for (std::size_t head = 0, first = 0; head < region.size(); ++head) {
-      // A vertex twice on the cycle is numbered by its last place.
-      const std::uint32_t v = vertices_[region[head]].local;
+      // The vertices after the cycle are numbered by their place in the region; a
+      // vertex twice on the cycle by its last place.
+      const std::uint32_t v = head < cycle_length_ ? vertices_[region[head]].local
+                                                   : static_cast<std::uint32_t> (head);
       const std::size_t last = offsets[head + 1];
       for (std::size_t arc = first; arc < last; ++arc)
         if (admissible (polygon, points, v, arcs[arc].head))

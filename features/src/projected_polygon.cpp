@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <numeric>
 
 namespace pcl {
 namespace tda {
@@ -31,55 +32,36 @@ ProjectedPolygon::ProjectedPolygon (const std::vector<Point3d>& points,
     high = std::max (high, c.y());
   }
   // About two edges per row on a round polygon.
-  const std::size_t num_rows = std::max<std::size_t> (1, corners_.size() / 2);
+  num_rows_ = std::max<std::size_t> (1, corners_.size() / 2);
   row_low_ = low;
-  row_height_ = high > low ? (high - low) / static_cast<double> (num_rows) : 1.0;
-  rows_.resize (num_rows);
-  for (std::size_t i = 0, j = corners_.size() - 1; i < corners_.size(); j = i++) {
-    const std::size_t a = rowOf (corners_[i].y()), b = rowOf (corners_[j].y());
-    for (std::size_t row = std::min (a, b); row <= std::max (a, b); ++row)
-      rows_[row].push_back (static_cast<std::uint32_t> (i));
-  }
-}
-
-std::size_t
-ProjectedPolygon::rowOf (double y) const
-{
-  const double row = std::floor ((y - row_low_) / row_height_);
-  return static_cast<std::size_t> (
-      std::clamp (row, 0.0, static_cast<double> (rows_.size() - 1)));
-}
-
-Eigen::Vector2d
-ProjectedPolygon::project (const Point3d& p) const
-{
-  const Eigen::Vector3d d = Eigen::Vector3d (p[0], p[1], p[2]) - centroid_;
-  return {d.dot (axis_u_), d.dot (axis_v_)};
-}
-
-bool
-ProjectedPolygon::contains (const Eigen::Vector2d& q) const
-{
-  bool inside = false;
-  for (const std::uint32_t i : rows_[rowOf (q.y())]) {
-    const Eigen::Vector2d& a = corners_[i];
-    const Eigen::Vector2d& b = corners_[i == 0 ? corners_.size() - 1 : i - 1];
-    // The edge straddles the horizontal line through q (half-open, so that a vertex
-    // on the line counts once) and crosses it right of q.
-    if ((a.y() > q.y()) != (b.y() > q.y()) &&
-        q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
-      inside = !inside;
-  }
-  return inside;
+  row_height_ = high > low ? (high - low) / static_cast<double> (num_rows_) : 1.0;
+  // Each edge in every row its span in y meets: counted, then placed.
+  const auto forEachRow = [&] (auto visit) {
+    for (std::size_t i = 0, j = corners_.size() - 1; i < corners_.size(); j = i++) {
+      const std::size_t a = rowOf (corners_[i].y()), b = rowOf (corners_[j].y());
+      for (std::size_t row = std::min (a, b); row <= std::max (a, b); ++row)
+        visit (row, i, j);
+    }
+  };
+  row_offsets_.assign (num_rows_ + 1, 0);
+  forEachRow (
+      [&] (std::size_t row, std::size_t, std::size_t) { ++row_offsets_[row + 1]; });
+  std::partial_sum (row_offsets_.begin(), row_offsets_.end(), row_offsets_.begin());
+  row_edges_.resize (row_offsets_.back());
+  std::vector<std::size_t> next (row_offsets_.begin(), row_offsets_.end() - 1);
+  forEachRow ([&] (std::size_t row, std::size_t i, std::size_t j) {
+    row_edges_[next[row]++] = {corners_[i], corners_[j]};
+  });
 }
 
 std::vector<double>
 ProjectedPolygon::crossings (double y) const
 {
   std::vector<double> xs;
-  for (const std::uint32_t i : rows_[rowOf (y)]) {
-    const Eigen::Vector2d& a = corners_[i];
-    const Eigen::Vector2d& b = corners_[i == 0 ? corners_.size() - 1 : i - 1];
+  const std::size_t row = rowOf (y);
+  for (std::size_t k = row_offsets_[row]; k < row_offsets_[row + 1]; ++k) {
+    const Eigen::Vector2d& a = row_edges_[k].a;
+    const Eigen::Vector2d& b = row_edges_[k].b;
     if ((a.y() > y) != (b.y() > y))
       xs.push_back (a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()));
   }

@@ -5,7 +5,9 @@
 
 #include <Eigen/Core>
 
-#include <cstdint>
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
 #include <vector>
 
 namespace pcl {
@@ -29,11 +31,29 @@ public:
 
   /** \brief The coordinates of \a p in the plane. */
   Eigen::Vector2d
-  project (const Point3d& p) const;
+  project (const Point3d& p) const
+  {
+    const Eigen::Vector3d d = Eigen::Vector3d (p[0], p[1], p[2]) - centroid_;
+    return {d.dot (axis_u_), d.dot (axis_v_)};
+  }
 
   /** \brief True when \a q (plane coordinates) is inside the polygon. */
   bool
-  contains (const Eigen::Vector2d& q) const;
+  contains (const Eigen::Vector2d& q) const
+  {
+    bool inside = false;
+    const std::size_t row = rowOf (q.y());
+    for (std::size_t k = row_offsets_[row]; k < row_offsets_[row + 1]; ++k) {
+      const Eigen::Vector2d& a = row_edges_[k].a;
+      const Eigen::Vector2d& b = row_edges_[k].b;
+      // The edge straddles the horizontal line through q (half-open, so that a
+      // vertex on the line counts once) and crosses it right of q.
+      if ((a.y() > q.y()) != (b.y() > q.y()) &&
+          q.x() < a.x() + (q.y() - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+        inside = !inside;
+    }
+    return inside;
+  }
 
   /** \brief The abscissas, in increasing order, where the polygon crosses the line
    * of ordinate \a y: a point of that line is inside when an odd number of them
@@ -74,19 +94,33 @@ public:
   }
 
 private:
+  /** An edge of the polygon, from corner a to corner b. */
+  struct Edge {
+    Eigen::Vector2d a;
+    Eigen::Vector2d b;
+  };
+
   /** The row of height \a y, clamped to the rows. */
   std::size_t
-  rowOf (double y) const;
+  rowOf (double y) const
+  {
+    const double row = std::floor ((y - row_low_) / row_height_);
+    return static_cast<std::size_t> (
+        std::clamp (row, 0.0, static_cast<double> (num_rows_ - 1)));
+  }
 
   Eigen::Vector3d centroid_;
   Eigen::Vector3d normal_;
   Eigen::Vector3d axis_u_;
   Eigen::Vector3d axis_v_;
   std::vector<Eigen::Vector2d> corners_;
+  std::size_t num_rows_ = 1;
   double row_low_ = 0.0;
   double row_height_ = 1.0;
-  /** Per row, the edges (by their first corner) whose span in y meets the row. */
-  std::vector<std::vector<std::uint32_t>> rows_;
+  /** Per row r, entries row_offsets_[r] to row_offsets_[r + 1] of row_edges_: the
+   * edges whose span in y meets the row. */
+  std::vector<std::size_t> row_offsets_;
+  std::vector<Edge> row_edges_;
 };
 
 } // namespace tda
