@@ -12,6 +12,8 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <map>
+#include <optional>
 #include <queue>
 #include <utility>
 
@@ -205,16 +207,34 @@ public:
   {
     std::vector<MinimalCycle> result;
     for (const MinimalCycle& first : windingRims (cycle, essential_edge)) {
-      std::vector<MinimalCycle> again = windingRims (first.vertices, essential_edge);
-      const auto widest =
-          std::max_element (again.begin(),
-                            again.end(),
-                            [] (const MinimalCycle& a, const MinimalCycle& b) {
-                              return a.clearance < b.clearance;
-                            });
-      if (widest != again.end())
-        result.push_back (std::move (*widest));
+      std::optional<MinimalCycle> again = foundAgain (first.vertices);
+      if (again) {
+        again->essential_edge = essential_edge;
+        result.push_back (std::move (*again));
+      }
     }
+    return result;
+  }
+
+private:
+  /** The widest rim around the empty regions inside the polygon of \a rim, if any.
+   * Many classes go around the same hole and find the same rim first: each rim is
+   * searched once (per thread). */
+  std::optional<MinimalCycle>
+  foundAgain (const std::vector<SimplexIndex>& rim)
+  {
+    const auto known = found_again_.find (rim);
+    if (known != found_again_.end())
+      return known->second;
+    std::vector<MinimalCycle> again = windingRims (rim, INVALID_SIMPLEX);
+    const auto widest = std::max_element (
+        again.begin(), again.end(), [] (const MinimalCycle& a, const MinimalCycle& b) {
+          return a.clearance < b.clearance;
+        });
+    std::optional<MinimalCycle> result;
+    if (widest != again.end())
+      result = std::move (*widest);
+    found_again_.emplace (rim, result);
     return result;
   }
 
@@ -411,6 +431,7 @@ private:
   std::vector<VertexState> vertices_;
   std::uint32_t cycle_length_ = 0;
   RegionGraph region_graph_;
+  std::map<std::vector<SimplexIndex>, std::optional<MinimalCycle>> found_again_;
 };
 
 } // namespace
