@@ -315,7 +315,8 @@ private:
   }
 
   /** Keeps in region_graph_ the edges of the cycle and the chords of \a polygon,
-   * the edges that cycles in it may take. */
+   * the edges that cycles in it may take. An edge between two vertices after the
+   * cycle is tested once, from its first end, for both of its arcs. */
   void
   keepCycleEdgesAndChords (const ProjectedPolygon& polygon,
                            const std::vector<SimplexIndex>& region,
@@ -323,6 +324,7 @@ private:
   {
     std::vector<std::size_t>& offsets = region_graph_.offsets;
     std::vector<RegionGraph::Arc>& arcs = region_graph_.arcs;
+    decided_.assign (arcs.size(), Decision::OPEN);
     std::size_t kept = 0;
     for (std::size_t head = 0, first = 0; head < region.size(); ++head) {
       // The vertices after the cycle are numbered by their place in the region; a
@@ -330,13 +332,35 @@ private:
       const std::uint32_t v = head < cycle_length_ ? vertices_[region[head]].local
                                                    : static_cast<std::uint32_t> (head);
       const std::size_t last = offsets[head + 1];
-      for (std::size_t arc = first; arc < last; ++arc)
-        if (admissible (polygon, points, v, arcs[arc].head))
+      for (std::size_t arc = first; arc < last; ++arc) {
+        const std::uint32_t w = arcs[arc].head;
+        bool keep = decided_[arc] == Decision::KEEP;
+        if (decided_[arc] == Decision::OPEN) {
+          keep = admissible (polygon, points, v, w);
+          if (v >= cycle_length_ && w > v)
+            decideReverse (w, v, keep);
+        }
+        if (keep)
           arcs[kept++] = arcs[arc];
+      }
       first = last;
       offsets[head + 1] = kept;
     }
     arcs.resize (kept);
+  }
+
+  /** Records \a keep for the arc from \a w to \a v, which are after the cycle, with
+   * \a w's arcs still as gathered. */
+  void
+  decideReverse (std::uint32_t w, std::uint32_t v, bool keep)
+  {
+    const std::vector<RegionGraph::Arc>& arcs = region_graph_.arcs;
+    for (std::size_t arc = region_graph_.offsets[w]; arc < region_graph_.offsets[w + 1];
+         ++arc)
+      if (arcs[arc].head == v) {
+        decided_[arc] = keep ? Decision::KEEP : Decision::DROP;
+        return;
+      }
   }
 
   /** True when the edge between the region's vertices numbered \a a and \a b (at
@@ -431,6 +455,9 @@ private:
   std::vector<VertexState> vertices_;
   std::uint32_t cycle_length_ = 0;
   RegionGraph region_graph_;
+  /** Per arc of region_graph_, whether keepCycleEdgesAndChords() keeps it. */
+  enum class Decision : std::uint8_t { OPEN, KEEP, DROP };
+  std::vector<Decision> decided_;
   std::map<std::vector<SimplexIndex>, std::optional<MinimalCycle>> found_again_;
 };
 
