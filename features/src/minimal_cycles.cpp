@@ -152,8 +152,8 @@ emptyRegions (const ProjectedPolygon& polygon,
   return regions;
 }
 
-/** Steps 2-4 of Alg 5.15 for one class at a time, with per-vertex scratch arrays
- * reset by a stamp (one object per thread). */
+/** Steps 2-4 of Alg 5.15 for one class at a time, with per-vertex scratch reset by
+ * marks and the region's graph kept for its storage (one object per thread). */
 class RimFinder {
 private:
   /** What the searches know of a vertex, together so that a visit reads one cache
@@ -238,7 +238,6 @@ private:
     return result;
   }
 
-private:
   /** The shortest cycles around the empty regions inside the polygon of \a cycle. */
   std::vector<MinimalCycle>
   windingRims (const std::vector<SimplexIndex>& cycle, SimplexIndex essential_edge)
