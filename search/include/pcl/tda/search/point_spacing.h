@@ -12,6 +12,10 @@
 namespace pcl {
 namespace tda {
 
+/** \brief How many points pointSpacing() and surfaceSpacing() measure at most by
+ * default. */
+constexpr std::size_t DEFAULT_SPACING_SAMPLES = 2000;
+
 /** \brief The spacing of points given as x, y, z triples (\a xyz, all finite) in
  * (x, y, z) order: see pointSpacing(). */
 double
@@ -37,7 +41,7 @@ double
 pointSpacing (const pcl::PointCloud<PointT>& cloud,
               double quantile = 0.5,
               std::size_t k = 1,
-              std::size_t max_samples = 2000,
+              std::size_t max_samples = DEFAULT_SPACING_SAMPLES,
               unsigned int threads = 0)
 {
   std::vector<std::array<float, 3>> finite;
@@ -67,7 +71,7 @@ constexpr std::size_t SURFACE_SPACING_NEIGHBORS = 6;
 template <typename PointT>
 double
 surfaceSpacing (const pcl::PointCloud<PointT>& cloud,
-                std::size_t max_samples = 2000,
+                std::size_t max_samples = DEFAULT_SPACING_SAMPLES,
                 unsigned int threads = 0)
 {
   return pointSpacing (cloud, 0.5, SURFACE_SPACING_NEIGHBORS, max_samples, threads) *

@@ -43,7 +43,7 @@ bool
 HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
 {
   const pcl::PointCloud<PointInT> points (*input_, *indices_);
-  const double spacing = surfaceSpacing (points);
+  const double spacing = surfaceSpacing (points, DEFAULT_SPACING_SAMPLES, threads_);
   if (!(spacing > 0.0)) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has fewer than %zu distinct finite "
                "points (%zu indexed): there is no surface.\n",

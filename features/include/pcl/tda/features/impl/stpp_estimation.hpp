@@ -62,7 +62,9 @@ STPPEstimation<PointInT, PointOutT>::computeSignature (float* histogram)
            all_points.size(), max_points_ > 0 ? max_points_ : all_points.size()))
     points.push_back (all_points[i]);
   const double spacing =
-      radius_ > 0.0 ? 0.0 : surfaceSpacing (*toPointCloud (points), SPACING_SAMPLES);
+      radius_ > 0.0
+          ? 0.0
+          : surfaceSpacing (*toPointCloud (points), SPACING_SAMPLES, threads_);
   if (!(cloud_size_ > 0.0) || (radius_ == 0.0 && !(spacing > 0.0))) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has too few distinct finite points "
                "(%zu finite of %zu indexed) to describe: at least %zu are needed.\n",

@@ -80,7 +80,10 @@ TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::computeSignature 
     const PointInT& p = (*input_)[index];
     points.push_back ({p.x, p.y, p.z});
   }
-  const double spacing = radius_ > 0.0 ? 0.0 : surfaceSpacing (*toPointCloud (points));
+  const double spacing =
+      radius_ > 0.0
+          ? 0.0
+          : surfaceSpacing (*toPointCloud (points), DEFAULT_SPACING_SAMPLES, threads_);
   if (points.size() < 2 || (radius_ == 0.0 && !(spacing > 0.0))) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has too few distinct points with a "
                "finite position and normal (%zu of %zu indexed) to describe: at "
