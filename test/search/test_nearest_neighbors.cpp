@@ -126,8 +126,9 @@ TEST (NearestNeighbors, FloatCoordinates)
   const std::vector<pcl::tda::Point3d> points = {{1.0, 2.0, 3.0}, {0.1, 0.2, 0.3}};
   EXPECT_EQ (pcl::tda::floatCoordinates (points),
              (std::vector<float>{1.0f, 2.0f, 3.0f, 0.1f, 0.2f, 0.3f}));
-  EXPECT_EQ (pcl::tda::floatCoordinates (points, {1, 1, 0}),
-             (std::vector<float>{0.1f, 0.2f, 0.3f, 0.1f, 0.2f, 0.3f, 1.0f, 2.0f, 3.0f}));
+  EXPECT_EQ (
+      pcl::tda::floatCoordinates (points, {1, 1, 0}),
+      (std::vector<float>{0.1f, 0.2f, 0.3f, 0.1f, 0.2f, 0.3f, 1.0f, 2.0f, 3.0f}));
 }
 
 } // namespace
