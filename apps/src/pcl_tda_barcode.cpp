@@ -16,10 +16,12 @@
 #include <pcl/tda/common/phat_io.h>
 #include <pcl/tda/common/progress_bar.h>
 #include <pcl/tda/gpu/vietoris_rips_builder.h>
+#include <pcl/tda/search/clique_persistence.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <sstream>
@@ -130,6 +132,16 @@ parseOptions (int argc, char** argv, Options& options)
                          "-png has no use without -svg or -diagram.");
 }
 
+/** True when H1 comes from the edges alone (computeCliqueH1Persistence()): the
+ * default engine, when nothing needs the triangles listed (-export-phat does). */
+bool
+triangleFree (const Options& options)
+{
+  return options.dimension == 1 &&
+         options.engine == pcl::tda::PersistenceEngine::COHOMOLOGY &&
+         options.phat_matrix.empty();
+}
+
 /** The PNG picture of -png beside the SVG picture \a svg; "" for none. */
 std::string
 pngOutput (const Options& options, const std::string& svg)
@@ -156,7 +168,8 @@ buildComplex (Builder& builder,
 {
   builder.setInputCloud (cloud);
   builder.setRadius (options.radius);
-  builder.setMaxDimension (static_cast<int> (options.dimension) + 1);
+  builder.setMaxDimension (
+      triangleFree (options) ? 1 : static_cast<int> (options.dimension) + 1);
   if (options.memory_mib > 0.0)
     builder.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
   pcl::tda::ProgressBar building ("  building");
@@ -257,34 +270,46 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     return 1;
   }
   seconds.build = console.stepMilliseconds() / 1000.0;
-  console.endStep (std::to_string (complex.numVertices()) + " points, " +
-                   std::to_string (complex.numEdges()) + " edges, " +
-                   std::to_string (complex.numTriangles()) + " triangles" +
-                   (options.gpu ? ", " + report.builder : ""));
+  console.endStep (
+      std::to_string (complex.numVertices()) + " points, " +
+      std::to_string (complex.numEdges()) + " edges" +
+      (triangleFree (options)
+           ? " (triangles enumerated by H1)"
+           : ", " + std::to_string (complex.numTriangles()) + " triangles") +
+      (options.gpu ? ", " + report.builder : ""));
 
   console.beginStep ("Computing H0");
   pcl::tda::PersistenceResult result = pcl::tda::computeH0Persistence (complex);
-  const std::size_t h0_intervals = result.diagram (complex, 0).size();
+  pcl::tda::PersistenceDiagram diagram = result.diagram (complex, 0);
+  const std::size_t h0_intervals = diagram.size();
   seconds.h0 = console.stepMilliseconds() / 1000.0;
   console.endStep (std::to_string (h0_intervals) + " intervals");
 
+  std::uint64_t num_triangles = complex.numTriangles();
   if (options.dimension == 1) {
     console.beginStep ("Computing H1 (" + pcl::tda::engineName (options.engine) + ")");
     pcl::tda::ProgressBar progress ("  reducing");
-    pcl::tda::addH1Persistence (complex,
-                                options.engine,
-                                result,
-                                [&progress] (std::size_t done, std::size_t total) {
-                                  progress.update (done, total);
-                                });
+    const pcl::tda::ProgressCallback report_progress = [&progress] (std::size_t done,
+                                                                    std::size_t total) {
+      progress.update (done, total);
+    };
+    if (triangleFree (options)) {
+      const pcl::tda::CliqueH1Persistence h1 =
+          pcl::tda::computeCliqueH1Persistence (complex, result, 0, report_progress);
+      diagram.insert (diagram.end(), h1.diagram.begin(), h1.diagram.end());
+      num_triangles = h1.num_triangles;
+    }
+    else {
+      pcl::tda::addH1Persistence (complex, options.engine, result, report_progress);
+      diagram = result.diagram (complex, 1);
+    }
     progress.finish();
     seconds.h1 = console.stepMilliseconds() / 1000.0;
   }
-  const pcl::tda::PersistenceDiagram diagram =
-      result.diagram (complex, static_cast<int> (options.dimension));
   const std::size_t h1_intervals = diagram.size() - h0_intervals;
   if (options.dimension == 1)
-    console.endStep (std::to_string (h1_intervals) + " intervals");
+    console.endStep (std::to_string (h1_intervals) + " intervals, " +
+                     std::to_string (num_triangles) + " triangles");
 
   console.beginStep ("Saving", options.output);
   try {
@@ -317,7 +342,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                  complex.numVertices(),
                  report.skipped_points,
                  complex.numEdges(),
-                 complex.numTriangles(),
+                 static_cast<std::size_t> (num_triangles),
                  h0_intervals,
                  h1_intervals,
                  seconds.load,

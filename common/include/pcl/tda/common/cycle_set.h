@@ -14,12 +14,14 @@ namespace tda {
 using CycleSet = std::vector<SimplexIndex>;
 
 /** \brief \a target += the sorted simplices [\a first, \a last) over Z2; \a buffer is
- * scratch space, kept by the caller to avoid allocations. */
+ * scratch space, kept by the caller to avoid allocations. \a Id is the type that
+ * names a simplex: SimplexIndex, or a wider key where simplices are not listed. */
+template <typename Id>
 inline void
-addCycle (CycleSet& target,
-          const SimplexIndex* first,
-          const SimplexIndex* last,
-          CycleSet& buffer)
+addCycle (std::vector<Id>& target,
+          const Id* first,
+          const Id* last,
+          std::vector<Id>& buffer)
 {
   buffer.clear();
   std::set_symmetric_difference (

@@ -1,0 +1,116 @@
+#pragma once
+
+#include <pcl/tda/common/cycle_set.h>
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/large_vector.h>
+#include <pcl/tda/common/progress.h>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief The columns a coboundary reduction keeps for later additions, one after
+ * another in one array: the reduced column of a paired edge, or the coboundary of
+ * an apparent pair's edge once some column needs it. A column is stored once and
+ * never changes, so one array and an index per edge replace a map of vectors (tens
+ * of thousands of allocations on a real scan). \a Key names a triangle. */
+template <typename Key>
+class StoredColumns {
+public:
+  explicit StoredColumns (std::size_t num_edges)
+  : slot_ (largeVector<std::uint32_t> (num_edges, NONE))
+  {}
+
+  bool
+  has (SimplexIndex edge) const
+  {
+    return slot_[edge] != NONE;
+  }
+
+  void
+  store (SimplexIndex edge, const std::vector<Key>& column)
+  {
+    slot_[edge] = static_cast<std::uint32_t> (bounds_.size() - 1);
+    entries_.insert (entries_.end(), column.begin(), column.end());
+    bounds_.push_back (entries_.size());
+  }
+
+  /** The stored column of \a edge as [first, last). */
+  std::pair<const Key*, const Key*>
+  column (SimplexIndex edge) const
+  {
+    const std::uint32_t slot = slot_[edge];
+    return {entries_.data() + bounds_[slot], entries_.data() + bounds_[slot + 1]};
+  }
+
+private:
+  static constexpr std::uint32_t NONE = 0xffffffffu;
+  std::vector<std::uint32_t> slot_; // per edge: its column's slot, or NONE
+  // Column k is entries_[bounds_[k], bounds_[k + 1]).
+  std::vector<std::size_t> bounds_ = {0};
+  std::vector<Key> entries_;
+};
+
+/** \brief Persistent cohomology of the edges (H1): the reduction loop of the
+ * cohomology engines, whichever way they name and enumerate triangles.
+ *
+ * The coboundary of every positive edge (the triangles containing it, in filtration
+ * order) is reduced over Z2, youngest edge first, with the oldest triangle as
+ * pivot; negative edges need no column (clearing). A positive edge whose oldest
+ * coboundary triangle has it as youngest edge forms an apparent pair with that
+ * triangle and needs no reduction: in a Vietoris-Rips complex most pairs are such.
+ * Cohomology pairs the same simplices as homology.
+ *
+ * \a Coboundaries names a triangle by a \c Key ordered as the filtration and
+ * provides:
+ * - `bool claimApparentPair (SimplexIndex edge)`: true when the positive \a edge
+ *   forms an apparent pair, which it then records;
+ * - `void coboundary (SimplexIndex edge, std::vector<Key>& column)`: the sorted
+ *   coboundary of \a edge;
+ * - `SimplexIndex owner (Key triangle)`: the edge paired with \a triangle so far
+ *   (apparent pairs included), or INVALID_SIMPLEX;
+ * - `void setOwner (Key triangle, SimplexIndex edge)`: pairs them.
+ * \param[in] edge_positive per edge, 1 when it is positive (from H0)
+ * \param[in,out] coboundaries the triangles and the pairing
+ * \param[in] progress optional callback (edges processed, edges)
+ */
+template <typename Coboundaries>
+void
+reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
+                        Coboundaries& coboundaries,
+                        const ProgressCallback& progress)
+{
+  using Key = typename Coboundaries::Key;
+  const std::size_t num_edges = edge_positive.size();
+  // The reduced columns of the paired edges, an apparent pair's (its coboundary,
+  // unchanged) only when first needed: few edges need one.
+  StoredColumns<Key> stored (num_edges);
+  std::vector<Key> column, owner_column, buffer;
+  for (std::size_t k = 0; k < num_edges; ++k) {
+    const auto edge = static_cast<SimplexIndex> (num_edges - 1 - k);
+    reportProgress (progress, k, num_edges);
+    if (!edge_positive[edge] || coboundaries.claimApparentPair (edge))
+      continue;
+    coboundaries.coboundary (edge, column);
+    SimplexIndex owner;
+    while (!column.empty() &&
+           (owner = coboundaries.owner (column.front())) != INVALID_SIMPLEX) {
+      if (!stored.has (owner)) { // an apparent pair: its column is its coboundary
+        coboundaries.coboundary (owner, owner_column);
+        stored.store (owner, owner_column);
+      }
+      const auto [first, last] = stored.column (owner);
+      addCycle (column, first, last, buffer);
+    }
+    if (!column.empty()) {
+      coboundaries.setOwner (column.front(), edge);
+      stored.store (edge, column);
+    }
+  }
+}
+
+} // namespace tda
+} // namespace pcl

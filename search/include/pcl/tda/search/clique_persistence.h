@@ -1,0 +1,48 @@
+#pragma once
+
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/persistence_diagram.h>
+#include <pcl/tda/common/persistence_result.h>
+#include <pcl/tda/common/progress.h>
+
+#include <cstdint>
+
+namespace pcl {
+namespace tda {
+
+/** \brief H1 of a clique complex computed from its edges alone. */
+struct CliqueH1Persistence {
+  /** The H1 intervals without the zero-length ones, in the order of
+   * PersistenceResult::diagram() on the complex with its triangles listed: finite
+   * intervals by killing triangle, then essential ones by edge. */
+  PersistenceDiagram diagram;
+  /** The triangles of the clique complex (counted, never stored). */
+  std::uint64_t num_triangles = 0;
+};
+
+/** \brief H1 persistence of the clique complex of dimension 2 of \a skeleton's edges
+ * (every three pairwise joined vertices span a triangle, at the value of its longest
+ * edge: the Vietoris-Rips complex VietorisRipsBuilder builds with max dimension 2),
+ * without listing its triangles.
+ *
+ * The same persistent cohomology as addCohomologyH1Persistence(), hence the same
+ * diagram, with triangles named by their two youngest edges (the order of the
+ * filtration) and enumerated from the edges' adjacency when a coboundary is needed,
+ * as Ripser does. Build \a skeleton with max dimension 1: the triangles, three
+ * quarters of a Vietoris-Rips complex, are then never counted into memory, listed
+ * or sorted. A first parallel pass over the edges finds the apparent pairs (and
+ * counts the triangles); the reduction itself is serial.
+ * \param[in] skeleton the edges in filtration order (its triangles are ignored)
+ * \param[in] h0 computeH0Persistence() of \a skeleton: which edges are positive
+ * \param[in] threads OpenMP threads of the first pass (0: OpenMP's default); the
+ * result does not depend on it
+ * \param[in] progress optional callback (edges processed, edges) of the reduction
+ */
+CliqueH1Persistence
+computeCliqueH1Persistence (const FilteredComplex& skeleton,
+                            const PersistenceResult& h0,
+                            unsigned int threads = 0,
+                            const ProgressCallback& progress = {});
+
+} // namespace tda
+} // namespace pcl
