@@ -1144,7 +1144,7 @@ printJSON (const Options& options, const OursMeasurement& ours, const Results& r
     }
     out << "}";
   }
-  out << ", \"engines\": {\"cohomology\": {\"h1\": " << json (ours.h1) << "}";
+  out << ", \"engines\": {\"default\": {\"h1\": " << json (ours.h1) << "}";
   for (const auto& engine : results.engines)
     out << ", \"" << engine.name << "\": {\"h1\": " << json (engine.h1)
         << ", \"ratio\": " << engine.h1.median / ours.h1.median
