@@ -1,10 +1,15 @@
+#include <pcl/filters/impl/voxel_grid.hpp>
 #include <pcl/filters/voxel_grid.h>
 #include <pcl/tda/apps/voxel_grid_check.h>
 #include <pcl/tda/apps/voxel_grid_filter.h>
 
 // Apart from scene_preprocessing.cpp: a tool that only grids its input
 // (pcl_tda_barcode) then does not load PCL's segmentation library and the libraries it
-// needs, which take most of a process' start-up.
+// needs, which take most of a process' start-up. PCL's VoxelGrid is compiled here from
+// its template (the impl header), as PCL does for custom point types, so that the tools
+// do not load libpcl_filters and libpcl_sample_consensus either: with them a process
+// takes twice as long to start (0.036 s against 0.019 s for one that loads libpcl_io
+// alone; the dynamic loader binds 50k of their symbols).
 
 namespace pcl {
 namespace tda {
