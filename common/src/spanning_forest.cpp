@@ -1,5 +1,4 @@
 #include <pcl/tda/common/spanning_forest.h>
-#include <pcl/tda/common/union_find.h>
 
 #include <algorithm>
 
@@ -51,8 +50,16 @@ minimumSpanningForest (std::size_t num_vertices, std::vector<FilteredEdge>& edge
   UnionFind components (num_vertices);
   std::vector<FilteredEdge> forest;
   forest.reserve (num_vertices > 0 ? num_vertices - 1 : 0);
-  filterKruskal (edges, 0, edges.size(), components, forest);
+  extendSpanningForest (edges, components, forest);
   return forest;
+}
+
+void
+extendSpanningForest (std::vector<FilteredEdge>& edges,
+                      UnionFind& components,
+                      std::vector<FilteredEdge>& forest)
+{
+  filterKruskal (edges, 0, edges.size(), components, forest);
 }
 
 } // namespace tda

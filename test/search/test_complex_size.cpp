@@ -1,4 +1,3 @@
-#include <pcl/tda/common/spanning_forest.h>
 #include <pcl/tda/search/complex_size.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/point_types.h>
@@ -131,38 +130,4 @@ TEST (ComplexSize, BudgetRefusesFarOverAndCountsOtherwise)
       grid, points, radius, AcceptAllPairs{}, 0, just_under, counts, size));
   EXPECT_TRUE (size.exact);
   EXPECT_EQ (size.edges, edges);
-}
-
-// The spanning forest of the radius graph with a pair test is the minimum spanning
-// forest of the brute-force graph with that test.
-TEST (ComplexSize, RadiusGraphSpanningForestWithPairTest)
-{
-  std::mt19937 random (5);
-  for (unsigned int k = 0; k < 30; ++k) {
-    const double radius = 0.1 + 0.02 * (k % 10);
-    const std::vector<Point3d> points = randomPoints (random, 100 + 20 * k, radius);
-    std::vector<FilteredEdge> edges = bruteForceEdges (points, radius, true);
-    const std::size_t expected_edges = edges.size();
-    const auto expected = minimumSpanningForest (points.size(), edges);
-    std::vector<FilteredEdge> forest;
-    ComplexSize size;
-    const MemoryBudget budget{std::size_t{1} << 30, 24, 0};
-    ASSERT_TRUE (
-        radiusGraphSpanningForest (points, radius, OddSum{}, 2, budget, forest, size));
-    EXPECT_EQ (size.edges, static_cast<double> (expected_edges));
-    expectSameEdges (forest, expected, "case " + std::to_string (k));
-  }
-}
-
-// A graph over the budget gives no forest and says how large it is.
-TEST (ComplexSize, SpanningForestRefusedOverBudget)
-{
-  std::mt19937 random (23);
-  const std::vector<Point3d> points = surfacePoints (random, 5000);
-  std::vector<FilteredEdge> forest{{0, 1, 0.0}};
-  ComplexSize size;
-  ASSERT_FALSE (radiusGraphSpanningForest (
-      points, 0.1, AcceptAllPairs{}, 0, MemoryBudget{1000, 24, 0}, forest, size));
-  EXPECT_TRUE (forest.empty());
-  EXPECT_GT (size.edges * 24, 2000.0);
 }

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/union_find.h>
 
 #include <cstddef>
 #include <vector>
@@ -24,6 +25,19 @@ namespace tda {
  */
 std::vector<FilteredEdge>
 minimumSpanningForest (std::size_t num_vertices, std::vector<FilteredEdge>& edges);
+
+/** \brief Kruskal with filtering, as minimumSpanningForest(), from components already
+ * joined by lighter edges: appends to \a forest, in filtration order, the edges of
+ * \a edges that join two of \a components, and joins them. Called on the edges of
+ * increasing length classes in turn (every edge of a call at least as heavy as every
+ * edge of the calls before), it gives the minimum spanning forest of all of them.
+ * \param[in] edges edges in any order (reordered)
+ * \param[in,out] components the components joined so far
+ * \param[in,out] forest the forest so far */
+void
+extendSpanningForest (std::vector<FilteredEdge>& edges,
+                      UnionFind& components,
+                      std::vector<FilteredEdge>& forest);
 
 } // namespace tda
 } // namespace pcl

@@ -1,7 +1,6 @@
 #pragma once
 
 #include <pcl/tda/common/point3d.h>
-#include <pcl/tda/common/spanning_forest.h>
 #include <pcl/tda/search/radius_edges.h>
 #include <pcl/tda/search/uniform_grid.h>
 
@@ -223,46 +222,6 @@ countRadiusEdgesWithinBudget (const UniformGrid& grid,
   };
   return countEdgesWithinBudget (
       budget, grid.numCandidatePairs(), count_edges, estimate, size);
-}
-
-/** \brief The minimum spanning forest of the radius graph of \a points: the only
- * edges that H0 of the graph's filtration needs, since the negative edges of the
- * elder rule form that forest (thesis Sec 4.1.4). The edges are the pairs within
- * \a radius that pass \a accept (e.g. a colour and normal test), found on a
- * UniformGrid of cell size \a radius behind the memory guard of
- * countRadiusEdgesWithinBudget(); the forest is taken by minimumSpanningForest().
- * \param[in] points the points, vertex v at points[v]
- * \param[in] radius the largest edge length (> 0)
- * \param[in] accept the extra test of a pair (a, b) of vertex ids within the radius
- * \param[in] threads OpenMP threads (0: OpenMP's default)
- * \param[in] budget the memory the graph's edges may take (bytes_per_triangle 0)
- * \param[out] forest the forest's edges in filtration order
- * \param[out] size the number of edges of the radius graph (exact unless refused
- * on an estimate)
- * \return false, with \a forest empty, when the graph is over the budget
- * \throws pcl::BadArgumentException as UniformGrid */
-template <typename Accept>
-bool
-radiusGraphSpanningForest (const std::vector<Point3d>& points,
-                           double radius,
-                           const Accept& accept,
-                           unsigned int threads,
-                           const MemoryBudget& budget,
-                           std::vector<FilteredEdge>& forest,
-                           ComplexSize& size)
-{
-  forest.clear();
-  const UniformGrid grid (points, radius, threads);
-  RadiusEdgeCounts counts;
-  if (!countRadiusEdgesWithinBudget (
-          grid, points, radius, accept, threads, budget, counts, size))
-    return false;
-  size.triangles = 0.0;
-  size.exact = true;
-  std::vector<FilteredEdge> edges =
-      listRadiusEdges (grid, points, radius, accept, counts.offsets, threads);
-  forest = minimumSpanningForest (points.size(), edges);
-  return true;
 }
 
 } // namespace tda

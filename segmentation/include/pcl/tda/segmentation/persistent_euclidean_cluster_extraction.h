@@ -114,11 +114,12 @@ public:
 
   PersistentEuclideanClusterExtraction() = default;
 
-  /** \brief Sets a search object for the radius queries (the graph is then built by
-   * VietorisRipsBuilder on it). Without one (the default), a uniform grid of cell
-   * size max distance gives the edges and only their minimum spanning forest is
-   * kept (radiusGraphSpanningForest()), which is much faster; the clusters and the
-   * diagram are the same. */
+  /** \brief Sets a search object for the radius queries (the whole radius graph is
+   * then built by VietorisRipsBuilder on it). Without one (the default), uniform
+   * grids give the minimum spanning forest of the radius graph scale by scale,
+   * looking only at pairs of points not yet joined (radiusGraphSpanningForest()),
+   * which is much faster, above all at the large max distance of the automatic
+   * distance; the clusters and the diagram are the same. */
   void
   setSearchMethod (const KdTreePtr& tree)
   {
@@ -356,7 +357,10 @@ public:
     return num_oversized_clusters_;
   }
 
-  /** \brief Number of edges of the radius graph of the last extract(). */
+  /** \brief Number of edges the last extract() listed: with a search method, the
+   * edges of the radius graph; without one, the most edges listed at one scale of
+   * radiusGraphSpanningForest(), pairs of points not yet joined (far fewer than the
+   * graph's edges when the max distance is large). */
   std::size_t
   getNumEdges () const
   {

@@ -6,7 +6,7 @@
 #include <pcl/tda/common/h0_persistence.h>
 #include <pcl/tda/common/persistent_components.h>
 #include <pcl/tda/common/system_memory.h>
-#include <pcl/tda/search/complex_size.h>
+#include <pcl/tda/search/radius_spanning_forest.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 
@@ -143,16 +143,13 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
     return false;
   }
   if (!fits) {
-    PCL_ERROR ("[pcl::tda::%s::extract] The radius graph of max distance %g would have "
-               "%s%.0f edges%s, %s%s, over the memory limit of %s. Use a smaller max "
-               "distance, a voxel grid, or a larger limit (setMemoryLimit()).\n",
+    PCL_ERROR ("[pcl::tda::%s::extract] The spanning forest up to max distance %g "
+               "would list more than %.0f edges at one scale (the points are that "
+               "dense), over the memory limit of %s. Use a smaller max distance, a "
+               "voxel grid, or a larger limit (setMemoryLimit()).\n",
                getClassName().c_str(),
                max_distance_,
-               size.exact ? "" : "about ",
                size.edges,
-               size.exact ? "" : " (estimated from a sample)",
-               size.exact ? "" : "about ",
-               formatBytes (budget.bytes (size.edges, 0.0)).c_str(),
                formatBytes (static_cast<double> (memory_limit_)).c_str());
     return false;
   }

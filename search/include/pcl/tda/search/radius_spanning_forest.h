@@ -1,0 +1,182 @@
+#pragma once
+
+#include <pcl/tda/common/filtered_complex.h>
+#include <pcl/tda/common/large_vector.h>
+#include <pcl/tda/common/point3d.h>
+#include <pcl/tda/common/spanning_forest.h>
+#include <pcl/tda/common/union_find.h>
+#include <pcl/tda/search/complex_size.h>
+#include <pcl/tda/search/radius_edges.h>
+#include <pcl/tda/search/uniform_grid.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace pcl {
+namespace tda {
+
+/** \brief Candidate pairs per point below which radiusGraphSpanningForest() lists a
+ * scale's edges without looking at a finer scale first. */
+constexpr double SPANNING_FOREST_PAIRS_PER_POINT = 256.0;
+
+/** \brief Most scales radiusGraphSpanningForest() looks at (the radius and its
+ * halves): on clouds of many duplicate points no halving makes the pairs few. */
+constexpr std::size_t MAX_SPANNING_FOREST_SCALES = 32;
+
+/** \brief The cell sizes at which radiusGraphSpanningForest() looks for edges: \a
+ * radius, then its halves while a UniformGrid of the last one has more than
+ * SPANNING_FOREST_PAIRS_PER_POINT candidate pairs per point. */
+struct SpanningForestScales {
+  std::vector<double> scales; // finest first
+  UniformGrid finest;         // the grid of scales.front()
+};
+
+/** \brief The scales of radiusGraphSpanningForest() for \a points and \a radius (grids
+ * built with \a threads). */
+SpanningForestScales
+spanningForestScales (const std::vector<Point3d>& points,
+                      double radius,
+                      unsigned int threads);
+
+/** \brief The components of a spanning forest under construction as the point order
+ * of a UniformGrid meets them, so that pairs of points already joined are skipped a
+ * run at a time. */
+class ComponentRuns {
+public:
+  /** \brief Reads the component of every point of \a grid (which must outlive this
+   * object) from \a components. */
+  ComponentRuns (const UniformGrid& grid, UnionFind& components);
+
+  /** \brief Calls \a visit(a, b) for the candidate pairs of cell \a cell (as
+   * UniformGrid::forEachCandidatePair()) whose points lie in different components;
+   * calls \a keep_going() before each point of the cell and stops when it returns
+   * false. */
+  template <typename Visit, typename KeepGoing>
+  void
+  forEachPairAcross (std::size_t cell, Visit visit, KeepGoing keep_going) const
+  {
+    for (std::uint32_t i = grid_.cellBegin (cell); i < grid_.cellBegin (cell + 1);
+         ++i) {
+      if (!keep_going())
+        return;
+      const std::uint32_t a = grid_.pointAt (i);
+      for (const auto& [begin, end] : grid_.laterCandidates (cell, i))
+        for (std::uint32_t j = begin; j < end;) {
+          if (component_at_[j] == component_at_[i])
+            j = run_end_[j];
+          else
+            visit (a, grid_.pointAt (j++));
+        }
+    }
+  }
+
+private:
+  const UniformGrid& grid_;
+  std::vector<std::uint32_t> component_at_; // per position: its point's component
+  std::vector<std::uint32_t> run_end_; // per position: end of its run in one component
+};
+
+/** \brief The minimum spanning forest of the radius graph of \a points: the only
+ * edges that H0 of the graph's filtration needs, since the negative edges of the
+ * elder rule form that forest (thesis Sec 4.1.4). The edges are the pairs within
+ * \a radius that pass \a accept (e.g. a colour and normal test).
+ *
+ * Kruskal's algorithm scale by scale (spanningForestScales(), finest first): at each
+ * scale s, on a UniformGrid of cell size s, the pairs within s between points not yet
+ * joined are listed and added by extendSpanningForest(). A pair within s whose points
+ * are joined already would close a cycle of shorter edges, so it is never looked at:
+ * at a large radius (an automatic clustering distance searched up to 0.1 m on points
+ * 2 mm apart) the search looks at a few pairs per point instead of thousands, and the
+ * forest is the same as that of the whole graph, edge for edge.
+ *
+ * Memory guard: a scale's pairs are counted before they are listed, and the count is
+ * abandoned soon after they would not fit \a budget (within a few thousand edges
+ * per thread), so the refusal takes bounded time on any input.
+ * \param[in] points the points, vertex v at points[v]
+ * \param[in] radius the largest edge length (> 0)
+ * \param[in] accept the extra test of a pair (a, b) of vertex ids within the radius,
+ * the same for a pair at any scale
+ * \param[in] threads OpenMP threads (0: OpenMP's default)
+ * \param[in] budget the memory one scale's edges may take (bytes_per_edge > 0)
+ * \param[out] forest the forest's edges in filtration order
+ * \param[out] size edges: the most edges listed at one scale (on refusal: at least as
+ * many as fit the budget, not exact)
+ * \return false, with \a forest empty, when a scale's edges are over the budget
+ * \throws pcl::BadArgumentException as UniformGrid */
+template <typename Accept>
+bool
+radiusGraphSpanningForest (const std::vector<Point3d>& points,
+                           double radius,
+                           const Accept& accept,
+                           unsigned int threads,
+                           const MemoryBudget& budget,
+                           std::vector<FilteredEdge>& forest,
+                           ComplexSize& size)
+{
+  forest.clear();
+  size = ComplexSize{};
+  UnionFind components (points.size());
+  SpanningForestScales scales = spanningForestScales (points, radius, threads);
+  for (std::size_t k = 0; k < scales.scales.size(); ++k) {
+    const double scale = scales.scales[k];
+    if (k > 0)
+      scales.finest = UniformGrid (points, scale, threads);
+    const UniformGrid& grid = scales.finest;
+    const ComponentRuns runs (grid, components);
+    const auto joins = [&] (std::uint32_t a, std::uint32_t b) {
+      return withinRadius (points[a], points[b], scale) && accept (a, b);
+    };
+    const auto num_cells = static_cast<std::int64_t> (grid.numCells());
+    std::vector<std::uint64_t> offsets (grid.numCells() + 1, 0);
+    std::atomic<std::uint64_t> counted{0};
+    const auto fits = [&] () {
+      return budget.fits (
+          static_cast<double> (counted.load (std::memory_order_relaxed)), 0.0);
+    };
+#pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
+    for (std::int64_t c = 0; c < num_cells; ++c) {
+      std::uint64_t count = 0, reported = 0;
+      runs.forEachPairAcross (
+          c,
+          [&] (std::uint32_t a, std::uint32_t b) { count += joins (a, b); },
+          [&] () { // checked every few thousand edges
+            if (count - reported < 4096)
+              return true;
+            counted += count - reported;
+            reported = count;
+            return fits();
+          });
+      counted += count - reported;
+      offsets[c + 1] = count;
+    }
+    const auto num_edges = static_cast<double> (counted.load());
+    size.edges = std::max (size.edges, num_edges);
+    if (!budget.fits (num_edges, 0.0)) {
+      size.exact = false;
+      forest.clear();
+      return false;
+    }
+    std::partial_sum (offsets.begin(), offsets.end(), offsets.begin());
+    auto edges = largeVector<FilteredEdge> (offsets.back());
+#pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
+    for (std::int64_t c = 0; c < num_cells; ++c) {
+      std::uint64_t position = offsets[c];
+      runs.forEachPairAcross (
+          c,
+          [&] (std::uint32_t a, std::uint32_t b) {
+            if (joins (a, b))
+              edges[position++] = {
+                  std::min (a, b), std::max (a, b), distance (points[a], points[b])};
+          },
+          [] () { return true; });
+    }
+    extendSpanningForest (edges, components, forest);
+  }
+  return true;
+}
+
+} // namespace tda
+} // namespace pcl

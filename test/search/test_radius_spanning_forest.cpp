@@ -1,0 +1,141 @@
+#include <pcl/tda/common/spanning_forest.h>
+#include <pcl/tda/search/radius_spanning_forest.h>
+
+#include <gtest/gtest.h>
+
+#include "search/grid_test_utils.h"
+
+#include <cmath>
+
+using namespace pcl::tda;
+using namespace pcl::tda::test;
+
+namespace {
+
+/** Dense blobs far apart compared with their spacing, with duplicates and lattice
+ * points whose distances tie: at a radius that spans several blobs the grid has far
+ * more candidate pairs than the sparse threshold, so the forest takes several scales.
+ */
+std::vector<Point3d>
+blobs (std::mt19937& random, std::size_t num_blobs, std::size_t per_blob)
+{
+  std::uniform_real_distribution<double> centre (-1.0, 1.0);
+  std::normal_distribution<double> spread (0.0, 0.01);
+  std::uniform_int_distribution<int> lattice (-3, 3);
+  std::vector<Point3d> points;
+  for (std::size_t b = 0; b < num_blobs; ++b) {
+    const Point3d c{centre (random), centre (random), centre (random)};
+    for (std::size_t i = 0; i < per_blob; ++i) {
+      if (i % 5 == 0 && i > 0)
+        points.push_back (points.back()); // a duplicate
+      else if (i % 5 == 1)
+        points.push_back ({c[0] + 0.004 * lattice (random),
+                           c[1] + 0.004 * lattice (random),
+                           c[2] + 0.004 * lattice (random)});
+      else
+        points.push_back (
+            {c[0] + spread (random), c[1] + spread (random), c[2] + spread (random)});
+    }
+  }
+  return points;
+}
+
+template <typename Accept>
+std::vector<FilteredEdge>
+forestOf (const std::vector<Point3d>& points,
+          double radius,
+          const Accept& accept,
+          unsigned int threads,
+          ComplexSize& size)
+{
+  std::vector<FilteredEdge> forest;
+  const MemoryBudget budget{std::size_t{1} << 30, 24, 0};
+  EXPECT_TRUE (radiusGraphSpanningForest (
+      points, radius, accept, threads, budget, forest, size));
+  return forest;
+}
+
+} // namespace
+
+// The spanning forest of the radius graph with a pair test is the minimum spanning
+// forest of the brute-force graph with that test, for 1 and 2 threads.
+TEST (RadiusSpanningForest, IsTheForestOfTheBruteForceGraphWithAPairTest)
+{
+  std::mt19937 random (5);
+  for (unsigned int k = 0; k < 30; ++k) {
+    const double radius = 0.1 + 0.02 * (k % 10);
+    const std::vector<Point3d> points = randomPoints (random, 100 + 20 * k, radius);
+    std::vector<FilteredEdge> edges = bruteForceEdges (points, radius, true);
+    const auto expected = minimumSpanningForest (points.size(), edges);
+    for (const unsigned int threads : {1u, 2u}) {
+      ComplexSize size;
+      const auto forest = forestOf (points, radius, OddSum{}, threads, size);
+      expectSameEdges (forest, expected, "case " + std::to_string (k));
+    }
+  }
+}
+
+// At a radius far above the spacing the forest is found over several scales, from
+// fewer listed edges than the graph has, and is still that of the whole graph,
+// edge for edge (ties and duplicates included), with or without a pair test.
+TEST (RadiusSpanningForest, SeveralScalesGiveTheForestOfTheWholeGraph)
+{
+  std::mt19937 random (11);
+  for (unsigned int k = 0; k < 20; ++k) {
+    const std::vector<Point3d> points = blobs (random, 2 + k % 4, 600 + 40 * k);
+    const double radius = 0.3 + 0.1 * (k % 8);
+    ASSERT_GT (spanningForestScales (points, radius, 0).scales.size(), 2u)
+        << "case " << k;
+    for (const bool odd_sum : {false, true}) {
+      std::vector<FilteredEdge> edges = bruteForceEdges (points, radius, odd_sum);
+      const double graph_edges = static_cast<double> (edges.size());
+      const auto expected = minimumSpanningForest (points.size(), edges);
+      for (const unsigned int threads : {1u, 2u}) {
+        ComplexSize size;
+        const auto forest =
+            odd_sum ? forestOf (points, radius, OddSum{}, threads, size)
+                    : forestOf (points, radius, AcceptAllPairs{}, threads, size);
+        const std::string what = "case " + std::to_string (k) +
+                                 (odd_sum ? ", odd sums" : "") + ", " +
+                                 std::to_string (threads) + " threads";
+        expectSameEdges (forest, expected, what);
+        EXPECT_LT (size.edges, graph_edges) << what;
+      }
+    }
+  }
+}
+
+// A scale whose edges are over the budget gives no forest and says it is over.
+TEST (RadiusSpanningForest, RefusedOverBudget)
+{
+  std::mt19937 random (23);
+  std::uniform_real_distribution<double> coordinate (0.0, 1.0);
+  std::vector<Point3d> points (5000);
+  for (auto& point : points)
+    point = {coordinate (random), coordinate (random), 0.0};
+  std::vector<FilteredEdge> forest{{0, 1, 0.0}};
+  ComplexSize size;
+  ASSERT_FALSE (radiusGraphSpanningForest (
+      points, 0.1, AcceptAllPairs{}, 0, MemoryBudget{1000, 24, 0}, forest, size));
+  EXPECT_TRUE (forest.empty());
+  EXPECT_GT (size.edges * 24, 1000.0);
+  EXPECT_FALSE (size.exact);
+}
+
+// Thousands of copies of one point: no scale makes the pairs few, and the count
+// stops as soon as they are over the budget instead of visiting all of them.
+TEST (RadiusSpanningForest, DuplicatesAreRefusedInBoundedTime)
+{
+  const std::vector<Point3d> points (20000, Point3d{0.5, 0.5, 0.5});
+  std::vector<FilteredEdge> forest;
+  ComplexSize size;
+  ASSERT_FALSE (radiusGraphSpanningForest (
+      points, 0.01, AcceptAllPairs{}, 0, MemoryBudget{1 << 20, 24, 0}, forest, size));
+  // The budget holds 43,690 edges; the count stops within a point's pairs and a
+  // few thousand edges per thread of it, far from all 2e8.
+  EXPECT_GT (size.edges, 43690.0);
+  EXPECT_LT (size.edges, 43690.0 + 2.0 * (20000.0 + 4096.0));
+  EXPECT_TRUE (forest.empty());
+  EXPECT_EQ (spanningForestScales (points, 0.01, 0).scales.size(),
+             MAX_SPANNING_FOREST_SCALES);
+}
