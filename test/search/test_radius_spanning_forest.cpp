@@ -82,10 +82,9 @@ TEST (RadiusSpanningForest, SeveralScalesGiveTheForestOfTheWholeGraph)
 {
   std::mt19937 random (11);
   for (unsigned int k = 0; k < 20; ++k) {
-    const std::vector<Point3d> points = blobs (random, 2 + k % 4, 600 + 40 * k);
+    const std::vector<Point3d> points = blobs (random, 2 + k % 4, 400 + 30 * k);
     const double radius = 0.3 + 0.1 * (k % 8);
-    ASSERT_GT (spanningForestScales (points, radius, 0).scales.size(), 2u)
-        << "case " << k;
+    ASSERT_GT (spanningForestScales (points, radius, 0).size(), 2u) << "case " << k;
     for (const bool odd_sum : {false, true}) {
       std::vector<FilteredEdge> edges = bruteForceEdges (points, radius, odd_sum);
       const double graph_edges = static_cast<double> (edges.size());
@@ -119,23 +118,36 @@ TEST (RadiusSpanningForest, RefusedOverBudget)
       points, 0.1, AcceptAllPairs{}, 0, MemoryBudget{1000, 24, 0}, forest, size));
   EXPECT_TRUE (forest.empty());
   EXPECT_GT (size.edges * 24, 1000.0);
-  EXPECT_FALSE (size.exact);
 }
 
-// Thousands of copies of one point: no scale makes the pairs few, and the count
-// stops as soon as they are over the budget instead of visiting all of them.
-TEST (RadiusSpanningForest, DuplicatesAreRefusedInBoundedTime)
+// Thousands of copies of a few points, among other points: the copies are joined
+// first (20,000 copies of one point would be 2e8 pairs), as Kruskal joins them, and
+// the forest is that of the whole graph, with or without a pair test.
+TEST (RadiusSpanningForest, CopiesOfAPointAreJoinedFirst)
 {
-  const std::vector<Point3d> points (20000, Point3d{0.5, 0.5, 0.5});
-  std::vector<FilteredEdge> forest;
+  std::mt19937 random (31);
+  std::uniform_real_distribution<double> coordinate (0.0, 1.0);
+  std::vector<Point3d> points;
+  for (int i = 0; i < 600; ++i)
+    points.push_back ({coordinate (random), coordinate (random), coordinate (random)});
+  for (int i = 0; i < 4500; ++i) // copies of three of them, interleaved
+    points.insert (points.begin() + random() % points.size(), points[i % 3]);
+  for (const bool odd_sum : {false, true}) {
+    std::vector<FilteredEdge> edges = bruteForceEdges (points, 0.2, odd_sum);
+    const auto expected = minimumSpanningForest (points.size(), edges);
+    ComplexSize size;
+    const auto forest = odd_sum ? forestOf (points, 0.2, OddSum{}, 2, size)
+                                : forestOf (points, 0.2, AcceptAllPairs{}, 2, size);
+    expectSameEdges (forest, expected, odd_sum ? "odd sums" : "all pairs");
+  }
+
+  const std::vector<Point3d> copies (20000, Point3d{0.5, 0.5, 0.5});
   ComplexSize size;
-  ASSERT_FALSE (radiusGraphSpanningForest (
-      points, 0.01, AcceptAllPairs{}, 0, MemoryBudget{1 << 20, 24, 0}, forest, size));
-  // The budget holds 43,690 edges; the count stops within a point's pairs and a
-  // few thousand edges per thread of it, far from all 2e8.
-  EXPECT_GT (size.edges, 43690.0);
-  EXPECT_LT (size.edges, 43690.0 + 2.0 * (20000.0 + 4096.0));
-  EXPECT_TRUE (forest.empty());
-  EXPECT_EQ (spanningForestScales (points, 0.01, 0).scales.size(),
-             MAX_SPANNING_FOREST_SCALES);
+  const auto forest = forestOf (copies, 0.01, AcceptAllPairs{}, 0, size);
+  ASSERT_EQ (forest.size(), copies.size() - 1);
+  for (SimplexIndex e = 0; e < forest.size(); ++e) {
+    EXPECT_EQ (forest[e].source, 0u);
+    EXPECT_EQ (forest[e].target, e + 1);
+  }
+  EXPECT_EQ (size.edges, 0.0);
 }

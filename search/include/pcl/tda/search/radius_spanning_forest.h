@@ -13,6 +13,7 @@
 #include <atomic>
 #include <cstdint>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 namespace pcl {
@@ -20,35 +21,80 @@ namespace tda {
 
 /** \brief Candidate pairs per point below which radiusGraphSpanningForest() lists a
  * scale's edges without looking at a finer scale first. */
-constexpr double SPANNING_FOREST_PAIRS_PER_POINT = 256.0;
+constexpr double SPANNING_FOREST_PAIRS_PER_POINT = 128.0;
 
 /** \brief Most scales radiusGraphSpanningForest() looks at (the radius and its
- * halves): on clouds of many duplicate points no halving makes the pairs few. */
+ * halves): where many points lie closer than any scale (copies apart by a rounding
+ * error), no halving makes the pairs few. */
 constexpr std::size_t MAX_SPANNING_FOREST_SCALES = 32;
 
-/** \brief The cell sizes at which radiusGraphSpanningForest() looks for edges: \a
- * radius, then its halves while a UniformGrid of the last one has more than
- * SPANNING_FOREST_PAIRS_PER_POINT candidate pairs per point. */
-struct SpanningForestScales {
-  std::vector<double> scales; // finest first
-  UniformGrid finest;         // the grid of scales.front()
-};
-
-/** \brief The scales of radiusGraphSpanningForest() for \a points and \a radius (grids
- * built with \a threads). */
-SpanningForestScales
+/** \brief The cell sizes at which radiusGraphSpanningForest() looks for edges,
+ * finest first: \a radius, then its halves while a UniformGrid of the last one (built
+ * with \a threads) has more than SPANNING_FOREST_PAIRS_PER_POINT candidate pairs per
+ * point, at most MAX_SPANNING_FOREST_SCALES of them. */
+std::vector<double>
 spanningForestScales (const std::vector<Point3d>& points,
                       double radius,
                       unsigned int threads);
+
+/** \brief The ids of \a points sorted by position (x, y, z), then id: the copies of
+ * a point come together, in increasing id. */
+std::vector<std::uint32_t>
+idsByPosition (const std::vector<Point3d>& points);
+
+/** \brief The first step of radiusGraphSpanningForest(): joins the copies of each
+ * point (equal coordinates) as Kruskal would, since their pairs have length 0 and come
+ * first in filtration order: a pair of copies that passes \a accept and joins two
+ * components, taken by increasing ends. With a test that accepts every pair, a
+ * point's k copies cost k steps, not k^2 pairs.
+ * \param[in,out] components the components, joined
+ * \param[out] forest the edges taken, in filtration order
+ * \return one point per position, for choosing the scales */
+template <typename Accept>
+std::vector<Point3d>
+joinCopies (const std::vector<Point3d>& points,
+            const Accept& accept,
+            UnionFind& components,
+            std::vector<FilteredEdge>& forest)
+{
+  const std::vector<std::uint32_t> ids = idsByPosition (points);
+  std::vector<Point3d> positions;
+  for (std::size_t first = 0, last = 0; first < ids.size(); first = last) {
+    while (last < ids.size() && points[ids[last]] == points[ids[first]])
+      ++last;
+    positions.push_back (points[ids[first]]);
+    std::size_t joins = 0;
+    for (std::size_t i = first; i < last && joins + 1 < last - first; ++i)
+      for (std::size_t j = i + 1; j < last; ++j) {
+        const std::uint32_t a = components.find (ids[i]), b = components.find (ids[j]);
+        if (a != b && accept (ids[i], ids[j])) {
+          components.linkRoots (a, b);
+          forest.push_back ({ids[i], ids[j], 0.0});
+          ++joins;
+        }
+      }
+  }
+  std::sort (forest.begin(), forest.end(), edgeFiltrationLess);
+  return positions;
+}
 
 /** \brief The components of a spanning forest under construction as the point order
  * of a UniformGrid meets them, so that pairs of points already joined are skipped a
  * run at a time. */
 class ComponentRuns {
 public:
-  /** \brief Reads the component of every point of \a grid (which must outlive this
-   * object) from \a components. */
-  ComponentRuns (const UniformGrid& grid, UnionFind& components);
+  /** \brief Reads the component of each of the \a num_points points from
+   * \a components, and the runs of \a grid (which must outlive this object). */
+  ComponentRuns (const UniformGrid& grid,
+                 UnionFind& components,
+                 std::size_t num_points);
+
+  /** \brief Whether points \a a and \b b lie in different components. */
+  bool
+  apart (std::uint32_t a, std::uint32_t b) const
+  {
+    return component_[a] != component_[b];
+  }
 
   /** \brief Calls \a visit(a, b) for the candidate pairs of cell \a cell (as
    * UniformGrid::forEachCandidatePair()) whose points lie in different components;
@@ -75,6 +121,7 @@ public:
 
 private:
   const UniformGrid& grid_;
+  std::vector<std::uint32_t> component_;    // per point: its component
   std::vector<std::uint32_t> component_at_; // per position: its point's component
   std::vector<std::uint32_t> run_end_; // per position: end of its run in one component
 };
@@ -84,7 +131,10 @@ private:
  * elder rule form that forest (thesis Sec 4.1.4). The edges are the pairs within
  * \a radius that pass \a accept (e.g. a colour and normal test).
  *
- * Kruskal's algorithm scale by scale (spanningForestScales(), finest first): at each
+ * Kruskal's algorithm. Where a UniformGrid of cell size \a radius has at most
+ * SPANNING_FOREST_PAIRS_PER_POINT candidate pairs per point, at that one scale; else
+ * copies of a point first (joinCopies()), then scale by scale (spanningForestScales()
+ * of the distinct positions, finest first). At each
  * scale s, on a UniformGrid of cell size s, the pairs within s between points not yet
  * joined are listed and added by extendSpanningForest(). A pair within s whose points
  * are joined already would close a cycle of shorter edges, so it is never looked at:
@@ -94,7 +144,9 @@ private:
  *
  * Memory guard: a scale's pairs are counted before they are listed, and the count is
  * abandoned soon after they would not fit \a budget (within a few thousand edges
- * per thread), so the refusal takes bounded time on any input.
+ * per thread); where the grid's candidate pairs are far over the budget, a sample of
+ * the points (estimateComplexSize()) first refuses the scale when its pairs are over
+ * twice the budget. So the refusal takes bounded time on any input.
  * \param[in] points the points, vertex v at points[v]
  * \param[in] radius the largest edge length (> 0)
  * \param[in] accept the extra test of a pair (a, b) of vertex ids within the radius,
@@ -102,8 +154,9 @@ private:
  * \param[in] threads OpenMP threads (0: OpenMP's default)
  * \param[in] budget the memory one scale's edges may take (bytes_per_edge > 0)
  * \param[out] forest the forest's edges in filtration order
- * \param[out] size edges: the most edges listed at one scale (on refusal: at least as
- * many as fit the budget, not exact)
+ * \param[out] size edges: the most edges listed at one scale; on refusal, the edges
+ * counted before the count stopped (exact true: there are more) or estimated from a
+ * sample (exact false)
  * \return false, with \a forest empty, when a scale's edges are over the budget
  * \throws pcl::BadArgumentException as UniformGrid */
 template <typename Accept>
@@ -119,16 +172,38 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
   forest.clear();
   size = ComplexSize{};
   UnionFind components (points.size());
-  SpanningForestScales scales = spanningForestScales (points, radius, threads);
-  for (std::size_t k = 0; k < scales.scales.size(); ++k) {
-    const double scale = scales.scales[k];
-    if (k > 0)
-      scales.finest = UniformGrid (points, scale, threads);
-    const UniformGrid& grid = scales.finest;
-    const ComponentRuns runs (grid, components);
+  // Where the radius graph is sparse, one scale: its grid is the only one.
+  const UniformGrid top (points, radius, threads);
+  std::vector<double> scales{radius};
+  if (static_cast<double> (top.numCandidatePairs()) >
+      SPANNING_FOREST_PAIRS_PER_POINT * static_cast<double> (points.size()))
+    scales = spanningForestScales (
+        joinCopies (points, accept, components, forest), radius, threads);
+  for (const double scale : scales) {
+    const std::optional<UniformGrid> finer =
+        scale < radius
+            ? std::optional<UniformGrid> (std::in_place, points, scale, threads)
+            : std::nullopt;
+    const UniformGrid& grid = finer ? *finer : top;
+    const ComponentRuns runs (grid, components, points.size());
     const auto joins = [&] (std::uint32_t a, std::uint32_t b) {
       return withinRadius (points[a], points[b], scale) && accept (a, b);
     };
+    // Far more candidates than the budget holds (two large components within the
+    // scale of each other): refused in bounded time when a sample says the pairs
+    // across are far over it too.
+    if (!budget.fits (static_cast<double> (grid.numCandidatePairs()), 0.0)) {
+      const auto across = [&] (std::uint32_t a, std::uint32_t b) {
+        return runs.apart (a, b) && accept (a, b);
+      };
+      const ComplexSize estimated =
+          estimateComplexSize (grid, points, scale, across, threads, 4096, 4096, 0);
+      if (!budget.fits (estimated.edges / 2.0, 0.0)) {
+        size = {estimated.edges, 0.0, false};
+        forest.clear();
+        return false;
+      }
+    }
     const auto num_cells = static_cast<std::int64_t> (grid.numCells());
     std::vector<std::uint64_t> offsets (grid.numCells() + 1, 0);
     std::atomic<std::uint64_t> counted{0};
@@ -155,7 +230,7 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
     const auto num_edges = static_cast<double> (counted.load());
     size.edges = std::max (size.edges, num_edges);
     if (!budget.fits (num_edges, 0.0)) {
-      size.exact = false;
+      size.exact = true; // counted, up to where it was over
       forest.clear();
       return false;
     }

@@ -144,12 +144,14 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
   }
   if (!fits) {
     PCL_ERROR ("[pcl::tda::%s::extract] The spanning forest up to max distance %g "
-               "would list more than %.0f edges at one scale (the points are that "
-               "dense), over the memory limit of %s. Use a smaller max distance, a "
-               "voxel grid, or a larger limit (setMemoryLimit()).\n",
+               "would list %s%.0f edges%s at one scale (the points are that dense), "
+               "over the memory limit of %s. Use a smaller max distance, a voxel grid, "
+               "or a larger limit (setMemoryLimit()).\n",
                getClassName().c_str(),
                max_distance_,
+               size.exact ? "more than " : "about ",
                size.edges,
+               size.exact ? "" : " (estimated from a sample)",
                formatBytes (static_cast<double> (memory_limit_)).c_str());
     return false;
   }
