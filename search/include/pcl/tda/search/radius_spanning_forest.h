@@ -189,51 +189,46 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
     const auto joins = [&] (std::uint32_t a, std::uint32_t b) {
       return withinRadius (points[a], points[b], scale) && accept (a, b);
     };
-    // Far more candidates than the budget holds (two large components within the
-    // scale of each other): refused in bounded time when a sample says the pairs
-    // across are far over it too.
-    if (!budget.fits (static_cast<double> (grid.numCandidatePairs()), 0.0)) {
+    const auto num_cells = static_cast<std::int64_t> (grid.numCells());
+    std::vector<std::uint64_t> offsets (grid.numCells() + 1, 0);
+    // The count pass, abandoned soon after the edges would not fit.
+    const auto count_edges = [&] () {
+      std::atomic<std::uint64_t> counted{0};
+#pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
+      for (std::int64_t c = 0; c < num_cells; ++c) {
+        std::uint64_t count = 0, reported = 0;
+        runs.forEachPairAcross (
+            c,
+            [&] (std::uint32_t a, std::uint32_t b) { count += joins (a, b); },
+            [&] () { // checked every few thousand edges
+              if (count - reported < 4096)
+                return true;
+              counted += count - reported;
+              reported = count;
+              return budget.fits (
+                  static_cast<double> (counted.load (std::memory_order_relaxed)), 0.0);
+            });
+        counted += count - reported;
+        offsets[c + 1] = count;
+      }
+      return EdgeCountSummary{counted.load(), 0};
+    };
+    // Where two large components lie within the scale of each other, far more
+    // candidates than the budget holds: a sample of the pairs across decides first.
+    const auto estimate = [&] () {
       const auto across = [&] (std::uint32_t a, std::uint32_t b) {
         return runs.apart (a, b) && accept (a, b);
       };
-      const ComplexSize estimated =
-          estimateComplexSize (grid, points, scale, across, threads, 4096, 4096, 0);
-      if (!budget.fits (estimated.edges / 2.0, 0.0)) {
-        size = {estimated.edges, 0.0, false};
-        forest.clear();
-        return false;
-      }
-    }
-    const auto num_cells = static_cast<std::int64_t> (grid.numCells());
-    std::vector<std::uint64_t> offsets (grid.numCells() + 1, 0);
-    std::atomic<std::uint64_t> counted{0};
-    const auto fits = [&] () {
-      return budget.fits (
-          static_cast<double> (counted.load (std::memory_order_relaxed)), 0.0);
+      return estimateComplexSize (grid, points, scale, across, threads, 4096, 4096, 0);
     };
-#pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
-    for (std::int64_t c = 0; c < num_cells; ++c) {
-      std::uint64_t count = 0, reported = 0;
-      runs.forEachPairAcross (
-          c,
-          [&] (std::uint32_t a, std::uint32_t b) { count += joins (a, b); },
-          [&] () { // checked every few thousand edges
-            if (count - reported < 4096)
-              return true;
-            counted += count - reported;
-            reported = count;
-            return fits();
-          });
-      counted += count - reported;
-      offsets[c + 1] = count;
-    }
-    const auto num_edges = static_cast<double> (counted.load());
-    size.edges = std::max (size.edges, num_edges);
-    if (!budget.fits (num_edges, 0.0)) {
-      size.exact = true; // counted, up to where it was over
+    ComplexSize listed;
+    if (!countEdgesWithinBudget (
+            budget, grid.numCandidatePairs(), count_edges, estimate, listed)) {
+      size = listed; // counted up to where it was over (exact), or estimated
       forest.clear();
       return false;
     }
+    size.edges = std::max (size.edges, listed.edges);
     std::partial_sum (offsets.begin(), offsets.end(), offsets.begin());
     auto edges = largeVector<FilteredEdge> (offsets.back());
 #pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
