@@ -269,6 +269,23 @@ TEST (STPPEstimation, CoarseLevelsBarelyDependOnThePointCount)
         EXPECT_EQ (sparse.histogram[count], dense.histogram[count])
             << "seed " << seed << " level " << level << " value " << count;
     }
+    // The sublevel sets are taken on level 1's coarse copy: their profiles move
+    // little, their ranges and pieces not at all.
+    for (std::size_t k = 0; k < pcl::tda::STPP_SUBLEVEL_FUNCTIONS; ++k) {
+      const std::size_t first =
+          pcl::tda::STPP_SUBLEVEL_OFFSET + k * pcl::tda::STPP_SUBLEVEL_PER_FUNCTION;
+      for (std::size_t j = 0; j < pcl::tda::STPP_CURVE_SAMPLES; ++j) {
+        EXPECT_NEAR (sparse.histogram[first + j], dense.histogram[first + j], 0.05)
+            << "seed " << seed << " function " << k << " sample " << j;
+        EXPECT_EQ (sparse.histogram[first + pcl::tda::STPP_CURVE_SAMPLES + j],
+                   dense.histogram[first + pcl::tda::STPP_CURVE_SAMPLES + j])
+            << "seed " << seed << " function " << k << " sample " << j;
+      }
+      EXPECT_NEAR (sparse.histogram[first + 2 * pcl::tda::STPP_CURVE_SAMPLES],
+                   dense.histogram[first + 2 * pcl::tda::STPP_CURVE_SAMPLES],
+                   0.03)
+          << "seed " << seed << " function " << k;
+    }
   }
 }
 

@@ -4,8 +4,8 @@
 // pcl::ESFSignature640, so that they are stored in pcl::PointCloud, written to PCD
 // files and fed to PCL's machine learning like PCL's own signatures.
 
-#include <pcl/point_traits.h>
 #include <pcl/register_point_struct.h>
+#include <pcl/type_traits.h>
 
 #include <cstddef>
 
@@ -23,10 +23,23 @@ constexpr std::size_t STPP_BETTI0_PER_LEVEL = STPP_CURVE_SAMPLES + 1;
 /** \brief Values per level in the Betti-1 part: the curve, the count of essential
  * 1-cycles and the count of long-lived 1-cycles. */
 constexpr std::size_t STPP_BETTI1_PER_LEVEL = STPP_CURVE_SAMPLES + 2;
+/** \brief Functions whose sublevel sets the Betti-0 part follows (shapeFunctions()):
+ * the distance from the centroid and the coordinates along the three principal
+ * axes. */
+constexpr std::size_t STPP_SUBLEVEL_FUNCTIONS = 4;
+/** \brief Values per function in the Betti-0 part (sublevelValues()): the fraction
+ * of the points and the count of components of the sublevel set at each curve
+ * sample, and the function's range. */
+constexpr std::size_t STPP_SUBLEVEL_PER_FUNCTION = 2 * STPP_CURVE_SAMPLES + 1;
 /** \brief Index of the first value of the Betti-0 part of an STPP signature. */
 constexpr std::size_t STPP_BETTI0_OFFSET = 0;
+/** \brief Index of the first sublevel-set value, within the Betti-0 part, after the
+ * levels' values. */
+constexpr std::size_t STPP_SUBLEVEL_OFFSET =
+    STPP_BETTI0_OFFSET + STPP_LEVELS * STPP_BETTI0_PER_LEVEL;
 /** \brief Index of the first value of the Betti-1 part of an STPP signature. */
-constexpr std::size_t STPP_BETTI1_OFFSET = STPP_LEVELS * STPP_BETTI0_PER_LEVEL;
+constexpr std::size_t STPP_BETTI1_OFFSET =
+    STPP_SUBLEVEL_OFFSET + STPP_SUBLEVEL_FUNCTIONS * STPP_SUBLEVEL_PER_FUNCTION;
 /** \brief Index of the size value of an STPP signature (its last value). */
 constexpr std::size_t STPP_SIZE_OFFSET =
     STPP_BETTI1_OFFSET + STPP_LEVELS * STPP_BETTI1_PER_LEVEL;
@@ -37,7 +50,8 @@ constexpr std::size_t STPP_SIGNATURE_SIZE = STPP_SIZE_OFFSET + 1;
  * Betti curves and counts over several scales, made from the persistence pairs of
  * the cloud. The layout (STPPEstimation documents each value):
  * - [STPP_BETTI0_OFFSET, STPP_BETTI1_OFFSET): per level, the Betti-0 curve and
- *   the count of components;
+ *   the count of components; then, from STPP_SUBLEVEL_OFFSET, per function, the
+ *   sublevel sets' point fraction and component curves and the function's range;
  * - [STPP_BETTI1_OFFSET, STPP_SIZE_OFFSET): per level, the Betti-1 curve, the
  *   count of essential 1-cycles and the count of long-lived 1-cycles;
  * - STPP_SIZE_OFFSET: log10 of the size of the cloud in metres (0 when the

@@ -38,7 +38,12 @@ namespace tda {
  * radii up to r_k (from twice the coarse copy's spacing on the coarse levels, where
  * its own sampling cycles are gone) and divided by its number of points, and counts of
  * components, essential and long-lived 1-cycles (betti0LevelValues(),
- * betti1LevelValues()); the last value is log10 of S in metres. Every value but the
+ * betti1LevelValues()). The Betti-0 part also follows the components of the
+ * sublevel sets of four functions on the coarse copy of level SUBLEVEL_LEVEL (the
+ * distance from the centroid and the coordinates along the principal axes,
+ * shapeFunctions()): how much of the object, and in how many pieces, lies below each
+ * of STPP_CURVE_SAMPLES values, and the function's range (sublevelValues()), its
+ * outline and profile. The last value is log10 of S in metres. Every value but the
  * last is invariant to scale (radii are relative to the spacing or to S), and, as the
  * curves are per point and the coarse copies have a set spacing, about invariant to the
  * number of points; setScaleInvariant() zeroes the last. The signature depends neither
@@ -72,6 +77,12 @@ public:
    * copy: its surface is filled with triangles early, and a hole lives for most of
    * [0, r]. */
   static constexpr double COARSE_RADIUS_PER_SPACING = 3.0;
+
+  /** \brief The level whose coarse copy and complex the sublevel-set values are
+   * taken on (sublevelValues()): its points are evenly spread over the surface, so
+   * that a fraction of them is a fraction of the object's area, and its edges join
+   * the object's parts but not parts apart by more than S / 8. */
+  static constexpr std::size_t SUBLEVEL_LEVEL = 1;
 
   /** \brief The default most points of level 0 (setMaxPoints()). */
   static constexpr std::size_t DEFAULT_MAX_POINTS = 1000;

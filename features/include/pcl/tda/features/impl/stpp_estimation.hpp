@@ -2,6 +2,7 @@
 
 #include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/features/stpp_estimation.h>
+#include <pcl/tda/features/stpp_sublevel.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/point_spacing.h>
 #include <pcl/tda/search/radius_edges.h>
@@ -129,6 +130,14 @@ STPPEstimation<PointInT, PointOutT>::computeSignature (float* histogram)
                          histogram + STPP_BETTI1_OFFSET +
                              level * STPP_BETTI1_PER_LEVEL);
     level_diagrams_.push_back (results[level].diagram (complexes[level]));
+  }
+  if (homology_ != STPPHomology::BETTI_1) {
+    const auto functions = shapeFunctions (level_points[SUBLEVEL_LEVEL], cloud_size_);
+    for (std::size_t k = 0; k < STPP_SUBLEVEL_FUNCTIONS; ++k)
+      sublevelValues (complexes[SUBLEVEL_LEVEL],
+                      functions[k],
+                      histogram + STPP_SUBLEVEL_OFFSET +
+                          k * STPP_SUBLEVEL_PER_FUNCTION);
   }
   pairing_vector_ = pairingVector (complexes[0], results[0], homology_);
   histogram[STPP_SIZE_OFFSET] =
