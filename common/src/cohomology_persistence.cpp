@@ -47,7 +47,7 @@ public:
     return true;
   }
 
-  /** The coboundary of \a edge, sorted, into \a coboundary. */
+  /** The coboundary of \a edge, in no particular order, into \a coboundary. */
   void
   coboundary (SimplexIndex edge, CycleSet& coboundary)
   {
@@ -57,7 +57,6 @@ public:
       if (triangle != INVALID_SIMPLEX)
         coboundary.push_back (triangle);
     });
-    std::sort (coboundary.begin(), coboundary.end());
   }
 
   SimplexIndex

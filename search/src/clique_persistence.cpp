@@ -104,7 +104,6 @@ public:
       const SimplexIndex oldest = std::min ({edge, uw, vw});
       column.push_back (triangleKey (youngest, edge ^ uw ^ vw ^ youngest ^ oldest));
     });
-    std::sort (column.begin(), column.end());
   }
 
   SimplexIndex

@@ -5,6 +5,7 @@
 #include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/common/progress.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <utility>
 #include <vector>
@@ -62,14 +63,17 @@ private:
  * pivot; negative edges need no column (clearing). A positive edge whose oldest
  * coboundary triangle has it as youngest edge forms an apparent pair with that
  * triangle and needs no reduction: in a Vietoris-Rips complex most pairs are such.
- * Cohomology pairs the same simplices as homology.
+ * Of the others, an edge whose oldest coboundary triangle no column has as pivot yet
+ * forms an emergent pair with it: its column is reduced as it is, so it is neither
+ * sorted nor stored (as Ripser does). Cohomology pairs the same simplices as
+ * homology.
  *
  * \a Coboundaries names a triangle by a \c Key ordered as the filtration and
  * provides:
  * - `bool claimApparentPair (SimplexIndex edge)`: true when the positive \a edge
  *   forms an apparent pair, which it then records;
- * - `void coboundary (SimplexIndex edge, std::vector<Key>& column)`: the sorted
- *   coboundary of \a edge;
+ * - `void coboundary (SimplexIndex edge, std::vector<Key>& column)`: the
+ *   coboundary of \a edge, in any order;
  * - `SimplexIndex owner (Key triangle)`: the edge paired with \a triangle so far
  *   (apparent pairs included), or INVALID_SIMPLEX;
  * - `void setOwner (Key triangle, SimplexIndex edge)`: pairs them.
@@ -85,8 +89,9 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
 {
   using Key = typename Coboundaries::Key;
   const std::size_t num_edges = edge_positive.size();
-  // The reduced columns of the paired edges, an apparent pair's (its coboundary,
-  // unchanged) only when first needed: few edges need one.
+  // The reduced columns of the edges whose columns were added to, an apparent or
+  // emergent pair's (its coboundary, unchanged) only when first needed: few edges
+  // need one.
   StoredColumns<Key> stored (num_edges);
   std::vector<Key> column, owner_column, buffer;
   for (std::size_t k = 0; k < num_edges; ++k) {
@@ -95,11 +100,20 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
     if (!edge_positive[edge] || coboundaries.claimApparentPair (edge))
       continue;
     coboundaries.coboundary (edge, column);
+    if (column.empty())
+      continue; // in no triangle: an essential class
+    const Key pivot = *std::min_element (column.begin(), column.end());
+    if (coboundaries.owner (pivot) == INVALID_SIMPLEX) {
+      coboundaries.setOwner (pivot, edge); // an emergent pair
+      continue;
+    }
+    std::sort (column.begin(), column.end());
     SimplexIndex owner;
     while (!column.empty() &&
            (owner = coboundaries.owner (column.front())) != INVALID_SIMPLEX) {
-      if (!stored.has (owner)) { // an apparent pair: its column is its coboundary
+      if (!stored.has (owner)) { // an apparent or emergent pair: its coboundary
         coboundaries.coboundary (owner, owner_column);
+        std::sort (owner_column.begin(), owner_column.end());
         stored.store (owner, owner_column);
       }
       const auto [first, last] = stored.column (owner);
