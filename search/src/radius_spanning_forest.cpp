@@ -35,8 +35,10 @@ ComponentRuns::ComponentRuns (const UniformGrid& grid,
                               std::size_t num_points)
 : grid_ (grid), component_ (num_points)
 {
-  for (std::uint32_t v = 0; v < num_points; ++v)
+  for (std::uint32_t v = 0; v < num_points; ++v) {
     component_[v] = components.find (v);
+    all_apart_ = all_apart_ && component_[v] == v;
+  }
   const std::uint32_t n = grid.numCells() > 0 ? grid.cellBegin (grid.numCells()) : 0;
   component_at_.resize (n);
   run_end_.resize (n);

@@ -109,9 +109,16 @@ public:
       if (!keep_going())
         return;
       const std::uint32_t a = grid_.pointAt (i);
+      if (all_apart_) { // no point joined yet: every candidate lies across
+        for (const auto& [begin, end] : grid_.laterCandidates (cell, i))
+          for (std::uint32_t j = begin; j < end; ++j)
+            visit (a, grid_.pointAt (j));
+        continue;
+      }
+      const std::uint32_t own = component_at_[i];
       for (const auto& [begin, end] : grid_.laterCandidates (cell, i))
         for (std::uint32_t j = begin; j < end;) {
-          if (component_at_[j] == component_at_[i])
+          if (component_at_[j] == own)
             j = run_end_[j];
           else
             visit (a, grid_.pointAt (j++));
@@ -121,6 +128,7 @@ public:
 
 private:
   const UniformGrid& grid_;
+  bool all_apart_ = true;                   // every point in a component of its own
   std::vector<std::uint32_t> component_;    // per point: its component
   std::vector<std::uint32_t> component_at_; // per position: its point's component
   std::vector<std::uint32_t> run_end_; // per position: end of its run in one component
