@@ -28,8 +28,8 @@ constexpr std::size_t STPP_BETTI1_PER_LEVEL = STPP_CURVE_SAMPLES + 2;
  * axes. */
 constexpr std::size_t STPP_SUBLEVEL_FUNCTIONS = 4;
 /** \brief Values per function in the Betti-0 part (sublevelValues()): the fraction
- * of the points and the count of components of the sublevel set at each curve
- * sample, and the function's range. */
+ * of the points and the count of lasting components of the sublevel set at each
+ * curve sample, and the function's range. */
 constexpr std::size_t STPP_SUBLEVEL_PER_FUNCTION = 2 * STPP_CURVE_SAMPLES + 1;
 /** \brief Index of the first value of the Betti-0 part of an STPP signature. */
 constexpr std::size_t STPP_BETTI0_OFFSET = 0;
