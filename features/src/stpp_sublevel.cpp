@@ -1,8 +1,7 @@
+#include <pcl/tda/common/plane_fit.h>
 #include <pcl/tda/common/union_find.h>
 #include <pcl/tda/features/signature_types.h>
 #include <pcl/tda/features/stpp_sublevel.h>
-
-#include <Eigen/Eigenvalues>
 
 #include <algorithm>
 #include <cmath>
@@ -15,26 +14,21 @@ namespace tda {
 std::array<std::vector<double>, STPP_SUBLEVEL_FUNCTIONS>
 shapeFunctions (const std::vector<Point3d>& points, double size)
 {
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  for (const Point3d& p : points)
-    centroid += Eigen::Vector3d (p[0], p[1], p[2]);
-  centroid /= static_cast<double> (std::max<std::size_t> (1, points.size()));
-  Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-  for (const Point3d& p : points) {
-    const Eigen::Vector3d d = Eigen::Vector3d (p[0], p[1], p[2]) - centroid;
-    scatter += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (scatter);
   std::array<std::vector<double>, STPP_SUBLEVEL_FUNCTIONS> functions;
+  if (points.empty())
+    return functions;
+  PlaneFit spread (points.front());
+  for (const Point3d& p : points)
+    spread.add (p);
+  const Eigen::Vector3d centroid = spread.centroid();
+  const Eigen::Matrix3d axes = spread.principalAxes();
   for (auto& f : functions)
     f.reserve (points.size());
   for (const Point3d& p : points) {
     const Eigen::Vector3d d = Eigen::Vector3d (p[0], p[1], p[2]) - centroid;
     functions[0].push_back (d.norm() / size);
-    // Eigenvalues increase: the principal axis is the last column.
     for (int axis = 0; axis < 3; ++axis)
-      functions[1 + axis].push_back (d.dot (solver.eigenvectors().col (2 - axis)) /
-                                     size);
+      functions[1 + axis].push_back (d.dot (axes.col (axis)) / size);
   }
   for (std::size_t k = 1; k < STPP_SUBLEVEL_FUNCTIONS; ++k) {
     double third_moment = 0.0;

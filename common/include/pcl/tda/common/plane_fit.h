@@ -4,6 +4,7 @@
 #include <pcl/tda/common/point3d.h>
 
 #include <Eigen/Core>
+#include <Eigen/Eigenvalues>
 
 #include <cstddef>
 
@@ -56,6 +57,21 @@ public:
     Eigen::Vector3f normal;
     pcl::eigen33 (covariance, eigenvalue, normal);
     return normal.normalized();
+  }
+
+  /** \brief The unit axes of the spread of the added points, largest variance first
+   * (signs arbitrary): their principal axes, in double precision; needs two
+   * points. */
+  Eigen::Matrix3d
+  principalAxes () const
+  {
+    const double n = static_cast<double> (count_);
+    const Eigen::Matrix3d covariance = (products_ - sum_ * sum_.transpose() / n) / n;
+    // The solver's eigenvalues increase: its columns reversed.
+    return Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> (covariance)
+        .eigenvectors()
+        .rowwise()
+        .reverse();
   }
 
 private:
