@@ -1,4 +1,5 @@
 #include <pcl/tda/apps/cloud_files.h>
+#include <pcl/tda/apps/pcd_data.h>
 #include <pcl/tda/apps/pcd_file_check.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
@@ -137,7 +138,6 @@ loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud)
     PCL_THROW_EXCEPTION (pcl::IOException,
                          path << " is not a valid PCD file: " << errorMessage (error));
   }
-  file.close();
   for (const char* name : {"x", "y", "z"}) {
     const int field = pcl::getFieldIndex (layout.header, name);
     if (field < 0)
@@ -152,8 +152,13 @@ loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud)
     cloud = layout.header;
     return;
   }
-  if (pcl::PCDReader().read (path, cloud) < 0)
-    PCL_THROW_EXCEPTION (pcl::IOException, "cannot read the points of " << path);
+  try {
+    readPCDData (file, layout, cloud);
+  }
+  catch (const pcl::IOException& error) {
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         path << " is not a valid PCD file: " << errorMessage (error));
+  }
   makeCoordinatesFloat (cloud, path);
 }
 

@@ -376,7 +376,29 @@ checkASCIIData (std::istream& file, std::uint64_t points, std::uint64_t values)
                                                << " points");
 }
 
-/** The binary data: exactly the header's points, or their compressed form. */
+/** True when the \a size bytes of \a file from \a offset on are all zeros. */
+bool
+allZeros (std::istream& file, std::uint64_t offset, std::uint64_t size)
+{
+  file.clear();
+  file.seekg (static_cast<std::streamoff> (offset));
+  std::vector<char> chunk (65536);
+  while (size > 0) {
+    const auto length =
+        static_cast<std::streamsize> (std::min<std::uint64_t> (size, chunk.size()));
+    if (!file.read (chunk.data(), length))
+      return false;
+    if (std::any_of (
+            chunk.begin(), chunk.begin() + length, [] (char c) { return c != 0; }))
+      return false;
+    size -= static_cast<std::uint64_t> (length);
+  }
+  return true;
+}
+
+/** The binary data: the header's points, then nothing or zeros (PCL's writer of
+ * PCLPointCloud2 pads the file with up to a page of zeros, which its reader ignores);
+ * or their compressed form. */
 void
 checkBinaryData (std::istream& file,
                  const PCDLayout& layout,
@@ -385,11 +407,16 @@ checkBinaryData (std::istream& file,
 {
   const std::uint64_t bytes = points * layout.header.point_step;
   if (layout.data == PCDData::BINARY) {
-    if (available != bytes)
+    if (available < bytes)
       PCL_THROW_EXCEPTION (
           pcl::IOException,
           points << " points of " << layout.header.point_step << " bytes need " << bytes
                  << " bytes of binary data, the file has " << available);
+    if (!allZeros (file, layout.data_offset + bytes, available - bytes))
+      PCL_THROW_EXCEPTION (pcl::IOException,
+                           "the file has " << available - bytes << " bytes after the "
+                                           << bytes << " of its " << points
+                                           << " points, and they are not zeros");
     return;
   }
   std::array<unsigned char, 8> sizes{};

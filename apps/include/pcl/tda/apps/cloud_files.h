@@ -13,9 +13,10 @@ namespace tda {
 
 /** \brief Reads a PCD file for a tool, the one input layer of the tools: refuses
  * what is not a regular file, checks the header and the size of the data
- * (readPCDLayout()) before PCL's reader allocates, requires the fields x, y and z of
- * one value each and gives them as 32-bit floats (converting double and integer
- * coordinates). Organized clouds keep their width and height.
+ * (readPCDLayout()) before anything is allocated for the points, requires the fields
+ * x, y and z of one value each, reads the points (readPCDData()) and gives x, y and
+ * z as 32-bit floats (converting double and integer coordinates). Organized clouds
+ * keep their width and height.
  * \throws pcl::IOException naming the file and saying what is wrong with it */
 void
 loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud);

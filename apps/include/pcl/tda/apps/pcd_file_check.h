@@ -37,7 +37,8 @@ constexpr std::uint64_t MAX_PCD_DATA_BYTES = 4294967295;
  * and types PCL knows; counts of at least 1; WIDTH x HEIGHT = POINTS (a missing
  * WIDTH is POINTS, a missing HEIGHT 1, as PCL reads old files); no line after DATA
  * that PCL's reader would take for the header; and the data against the size of the
- * file: binary data exactly WIDTH x HEIGHT points, compressed data at least the
+ * file: binary data WIDTH x HEIGHT points (then only zeros, the padding of PCL's
+ * writer), compressed data at least the
  * compressed size its first 4 bytes give, decompressing to exactly that many points
  * (and at most what LZF can expand it to), ASCII data one line of numbers per point
  * with as many numbers as the fields have values. Leaves \a file at an unspecified
