@@ -278,15 +278,18 @@ writeDiagramCSV (std::ostream& out, const PersistenceDiagram& diagram)
                                        << ", birth " << interval.birth << ", death "
                                        << interval.death << "): " << problem);
   }
+  const auto less = [] (const PersistenceInterval& a, const PersistenceInterval& b) {
+    return std::tie (a.dimension, a.birth, a.death) <
+           std::tie (b.dimension, b.birth, b.death);
+  };
+  // The engines give H0 sorted already: only what follows needs a sort, then a merge.
   PersistenceDiagram sorted = diagram;
-  std::sort (sorted.begin(),
-             sorted.end(),
-             [] (const PersistenceInterval& a, const PersistenceInterval& b) {
-               return std::tie (a.dimension, a.birth, a.death) <
-                      std::tie (b.dimension, b.birth, b.death);
-             });
+  const auto unsorted = std::is_sorted_until (sorted.begin(), sorted.end(), less);
+  std::sort (unsorted, sorted.end(), less);
+  std::inplace_merge (sorted.begin(), unsorted, sorted.end(), less);
   // One string, then one write: ten times faster than the stream's formatting.
   std::string text = std::string (CSV_HEADER) + '\n';
+  text.reserve (text.size() + sorted.size() * (8 + 2 * MAX_VALUE_TEXT));
   char line[16 + 2 * MAX_VALUE_TEXT];
   for (const auto& interval : sorted) {
     char* at = std::to_chars (line, line + 16, interval.dimension).ptr;
