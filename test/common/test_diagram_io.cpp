@@ -178,6 +178,11 @@ TEST (DiagramIO, RoundTripOfRandomDiagramsIsExact)
       interval.birth = std::min (a, b);
       interval.death = unit (generator) < 0.1 ? INF : std::max (a, b);
     }
+    if (trial % 2 == 1) { // a sorted first part, as the engines give H0
+      PersistenceDiagram first (diagram.begin(), diagram.begin() + diagram.size() / 2);
+      first = sortedByValue (first);
+      std::copy (first.begin(), first.end(), diagram.begin());
+    }
     SCOPED_TRACE ("trial " + std::to_string (trial));
     expectBitwiseEqual (diagram, roundTrip (diagram));
     if (HasFailure())
