@@ -11,7 +11,8 @@ packages=(
   clang-format doxygen                  # format check and API reference
   clang                                 # libFuzzer targets (test/fuzz)
   ripser libphat-dev libgudhi-dev time # reference tools and timing, for tests and benchmarks
-  libx11-dev libpng-dev xvfb xauth      # pcl_tda_viewer; its tests and the demo on a virtual display
+  libpng-dev                            # the tools' PNG pictures
+  libx11-dev xvfb xauth                 # pcl_tda_viewer; its tests and the demo on a virtual display
   librsvg2-bin                          # rsvg-convert: the tools' -png, SVG pictures as PNG
 )
 

@@ -1,6 +1,7 @@
 #include <pcl/tda/apps/cloud_files.h>
 #include <pcl/tda/apps/pcd_data.h>
 #include <pcl/tda/apps/pcd_file_check.h>
+#include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
 
@@ -160,6 +161,18 @@ loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud)
                          path << " is not a valid PCD file: " << errorMessage (error));
   }
   makeCoordinatesFloat (cloud, path);
+}
+
+void
+savePointCloudFile (const std::string& path,
+                    const pcl::PCLPointCloud2& cloud,
+                    const Eigen::Vector4f& origin,
+                    const Eigen::Quaternionf& orientation)
+{
+  replaceFileAtomically (path, [&] (const std::string& temporary) {
+    std::ofstream out (temporary, std::ios::binary);
+    return out && writePCDBinary (out, cloud, origin, orientation);
+  });
 }
 
 } // namespace tda

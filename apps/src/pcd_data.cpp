@@ -186,6 +186,46 @@ readBytes (std::istream& file, std::uint8_t* out, std::size_t size)
 } // namespace
 
 bool
+writePCDBinary (std::ostream& out,
+                const pcl::PCLPointCloud2& cloud,
+                const Eigen::Vector4f& origin,
+                const Eigen::Quaternionf& orientation)
+{
+  std::vector<pcl::PCLPointField> fields;
+  for (const auto& field : cloud.fields)
+    if (field.name != "_")
+      fields.push_back (field);
+  std::string names, sizes, types, counts;
+  std::size_t packed_step = 0;
+  for (const auto& field : fields) {
+    const int size = pcl::getFieldSize (field.datatype);
+    names += " " + field.name;
+    sizes += " " + std::to_string (size);
+    types += std::string (" ") + pcl::getFieldType (field.datatype);
+    counts += " " + std::to_string (field.count);
+    packed_step += std::size_t{field.count} * size;
+  }
+  const std::size_t points = std::size_t{cloud.width} * cloud.height;
+  out << "# .PCD v0.7 - Point Cloud Data file format\nVERSION 0.7\nFIELDS" << names
+      << "\nSIZE" << sizes << "\nTYPE" << types << "\nCOUNT" << counts << "\nWIDTH "
+      << cloud.width << "\nHEIGHT " << cloud.height << "\nVIEWPOINT " << origin.x()
+      << " " << origin.y() << " " << origin.z() << " " << orientation.w() << " "
+      << orientation.x() << " " << orientation.y() << " " << orientation.z()
+      << "\nPOINTS " << points << "\nDATA binary\n";
+  std::vector<char> data (points * packed_step);
+  char* at = data.data();
+  for (std::size_t p = 0; p < points; ++p)
+    for (const auto& field : fields) {
+      const std::size_t bytes =
+          std::size_t{field.count} * pcl::getFieldSize (field.datatype);
+      std::memcpy (at, &cloud.data[p * cloud.point_step + field.offset], bytes);
+      at += bytes;
+    }
+  out.write (data.data(), static_cast<std::streamsize> (data.size()));
+  return static_cast<bool> (out.flush());
+}
+
+bool
 lzfDecompress (const std::uint8_t* in,
                std::size_t size,
                std::uint8_t* out,

@@ -1,9 +1,9 @@
-#include <pcl/io/png_io.h>
 #include <pcl/tda/apps/rgb_image.h>
 #include <pcl/tda/common/atomic_file.h>
 
+#include <png.h>
+
 #include <algorithm>
-#include <fstream>
 
 namespace pcl {
 namespace tda {
@@ -51,13 +51,15 @@ void
 RGBImage::savePNG (const std::string& path) const
 {
   replaceFileAtomically (path, [this] (const std::string& temporary) {
-    pcl::io::saveRgbPNGFile (
-        temporary, rgb_.data(), static_cast<int> (width_), static_cast<int> (height_));
-    // PCL's writer says nothing when it fails: check that a PNG was written.
-    std::ifstream written (temporary, std::ios::binary);
-    char signature[4] = {};
-    written.read (signature, 4);
-    return written && signature[1] == 'P' && signature[2] == 'N' && signature[3] == 'G';
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    image.width = static_cast<png_uint_32> (width_);
+    image.height = static_cast<png_uint_32> (height_);
+    image.format = PNG_FORMAT_RGB;
+    const bool written =
+        png_image_write_to_file (&image, temporary.c_str(), 0, rgb_.data(), 0, nullptr);
+    png_image_free (&image);
+    return written;
   });
 }
 

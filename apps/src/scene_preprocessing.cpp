@@ -1,6 +1,9 @@
+// PCL's plane segmentation and index extraction compiled from their template
+// headers, so that the tools do not load libpcl_segmentation and libpcl_features.
 #include <pcl/common/point_tests.h>
-#include <pcl/filters/extract_indices.h>
-#include <pcl/segmentation/sac_segmentation.h>
+#include <pcl/filters/impl/extract_indices.hpp>
+#include <pcl/filters/impl/filter_indices.hpp>
+#include <pcl/segmentation/impl/sac_segmentation.hpp>
 #include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/exceptions.h>

@@ -231,6 +231,72 @@ TEST (PCDData, SameAsPCLsReaderOnTheRealScans)
   }
 }
 
+/** Writes \a cloud with ours and with PCL's binary writer and expects PCL's reader
+ * to read the same cloud and viewpoint from both files, and ours to read it too. */
+template <typename PointT>
+void
+expectWrittenAsPCLWrites (const pcl::PointCloud<PointT>& cloud)
+{
+  const std::string ours_path = temporaryPath ("ours.pcd");
+  const std::string pcl_path = temporaryPath ("pcl.pcd");
+  savePointCloudFile (ours_path, cloud);
+  std::remove (pcl_path.c_str());
+  ASSERT_EQ (pcl::io::savePCDFileBinary (pcl_path, cloud), 0);
+  pcl::PCLPointCloud2 ours, reference;
+  Eigen::Vector4f ours_origin, reference_origin;
+  Eigen::Quaternionf ours_orientation, reference_orientation;
+  int version = 0;
+  ASSERT_EQ (
+      pcl::PCDReader().read (ours_path, ours, ours_origin, ours_orientation, version),
+      0);
+  ASSERT_EQ (pcl::PCDReader().read (
+                 pcl_path, reference, reference_origin, reference_orientation, version),
+             0);
+  expectSameCloud (ours, reference);
+  EXPECT_EQ (ours_origin, reference_origin);
+  EXPECT_EQ (ours_orientation.coeffs(), reference_orientation.coeffs());
+  expectSameCloud (readOurs (ours_path), reference);
+}
+
+TEST (PCDData, WritesWhatPCLsBinaryWriterWrites)
+{
+  std::mt19937 random (11);
+  std::uniform_real_distribution<float> unit (-1.0f, 1.0f);
+  for (const std::uint32_t width : {1u, 7u, 300u}) {
+    SCOPED_TRACE ("width " + std::to_string (width));
+    pcl::PointCloud<pcl::PointXYZRGBL> labelled;
+    pcl::PointCloud<pcl::PointXYZL> holes;
+    pcl::PointCloud<pcl::PointNormal> normals;
+    for (std::uint32_t i = 0; i < width * 2; ++i) {
+      pcl::PointXYZRGBL point;
+      point.getVector3fMap() =
+          Eigen::Vector3f (unit (random), unit (random), unit (random));
+      point.rgba = static_cast<std::uint32_t> (random());
+      point.label = static_cast<std::uint32_t> (random() % 50);
+      if (i % 13 == 5)
+        point.x = std::numeric_limits<float>::quiet_NaN();
+      labelled.push_back (point);
+      pcl::PointXYZL hole;
+      hole.getVector3fMap() = point.getVector3fMap();
+      hole.label = point.label;
+      holes.push_back (hole);
+      pcl::PointNormal normal;
+      normal.getVector3fMap() = point.getVector3fMap();
+      normal.getNormalVector3fMap() = Eigen::Vector3f (0.0f, 0.6f, 0.8f);
+      normal.curvature = unit (random);
+      normals.push_back (normal);
+    }
+    labelled.width = holes.width = normals.width = width; // organized: 2 rows
+    labelled.height = holes.height = normals.height = 2;
+    labelled.is_dense = holes.is_dense = normals.is_dense = false;
+    labelled.sensor_origin_ = Eigen::Vector4f (0.5f, -1.25f, 2.0f, 0.0f);
+    labelled.sensor_orientation_ = Eigen::Quaternionf (0.5f, 0.5f, -0.5f, 0.5f);
+    expectWrittenAsPCLWrites (labelled);
+    expectWrittenAsPCLWrites (holes);
+    expectWrittenAsPCLWrites (normals);
+  }
+}
+
 TEST (PCDData, RefusesASCIIValuesOutsideTheirType)
 {
   using pcl::tda::test::pcdHeader;

@@ -1,10 +1,11 @@
 #pragma once
 
 #include <pcl/common/io.h>
-#include <pcl/io/pcd_io.h>
-#include <pcl/tda/common/atomic_file.h>
+#include <pcl/conversions.h>
 #include <pcl/PCLPointCloud2.h>
 #include <pcl/point_cloud.h>
+
+#include <Eigen/Geometry>
 
 #include <string>
 
@@ -34,16 +35,23 @@ loadPointCloudFile (const std::string& path, pcl::PointCloud<PointT>& cloud)
     pcl::fromPCLPointCloud2 (blob, cloud);
 }
 
-/** \brief Saves a cloud as a binary PCD file, atomically: \a path never holds a
- * partial file.
+/** \brief Saves a cloud as a binary PCD file (writePCDBinary(), no PCL io library),
+ * atomically: \a path never holds a partial file.
  * \throws pcl::IOException when the file cannot be written */
+void
+savePointCloudFile (const std::string& path,
+                    const pcl::PCLPointCloud2& cloud,
+                    const Eigen::Vector4f& origin,
+                    const Eigen::Quaternionf& orientation);
+
+/** \brief savePointCloudFile() of a cloud of points of type \a PointT. */
 template <typename PointT>
 void
 savePointCloudFile (const std::string& path, const pcl::PointCloud<PointT>& cloud)
 {
-  replaceFileAtomically (path, [&cloud] (const std::string& temporary) {
-    return pcl::io::savePCDFileBinary (temporary, cloud) >= 0;
-  });
+  pcl::PCLPointCloud2 blob;
+  pcl::toPCLPointCloud2 (cloud, blob);
+  savePointCloudFile (path, blob, cloud.sensor_origin_, cloud.sensor_orientation_);
 }
 
 } // namespace tda

@@ -3,8 +3,11 @@
 #include <pcl/tda/apps/pcd_file_check.h>
 #include <pcl/PCLPointCloud2.h>
 
+#include <Eigen/Geometry>
+
 #include <cstdint>
 #include <istream>
+#include <ostream>
 
 namespace pcl {
 namespace tda {
@@ -23,6 +26,17 @@ namespace tda {
  * compressed data is corrupt */
 void
 readPCDData (std::istream& file, const PCDLayout& layout, pcl::PCLPointCloud2& cloud);
+
+/** \brief Writes \a cloud to \a out as a binary PCD file, as PCL's binary writer of
+ * point types does, without PCL's io library: the named fields packed one after the
+ * other (the padding of the point type left out), the viewpoint \a origin and
+ * \a orientation.
+ * \return whether the whole file was written */
+bool
+writePCDBinary (std::ostream& out,
+                const pcl::PCLPointCloud2& cloud,
+                const Eigen::Vector4f& origin,
+                const Eigen::Quaternionf& orientation);
 
 /** \brief Decompresses the \a size bytes of LZF data at \a in into exactly
  * \a out_size bytes at \a out.

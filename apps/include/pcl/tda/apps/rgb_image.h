@@ -13,7 +13,7 @@ namespace tda {
 using RGB = std::array<std::uint8_t, 3>;
 
 /** \brief An RGB picture for the tools' PNG outputs of clouds and screenshots:
- * pixels and filled rectangles, saved with PCL's PNG writer. */
+ * pixels and filled rectangles, saved as PNG by libpng. */
 class RGBImage {
 public:
   /** \brief A \a width x \a height picture of colour \a background. */
