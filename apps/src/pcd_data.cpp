@@ -273,6 +273,8 @@ readPCDData (std::istream& file, const PCDLayout& layout, pcl::PCLPointCloud2& c
   const std::size_t bytes =
       std::size_t{cloud.width} * cloud.height * std::size_t{cloud.point_step};
   cloud.data.assign (bytes, 0);
+  if (bytes == 0) // no points: nothing to read
+    return;
   file.clear();
   file.seekg (static_cast<std::streamoff> (layout.data_offset));
   switch (layout.data) {
@@ -280,10 +282,9 @@ readPCDData (std::istream& file, const PCDLayout& layout, pcl::PCLPointCloud2& c
     readBytes (file, cloud.data.data(), bytes);
     break;
   case PCDData::BINARY_COMPRESSED: {
-    std::uint8_t sizes[8];
-    readBytes (file, sizes, sizeof (sizes));
-    const std::size_t compressed =
-        sizes[0] | (sizes[1] << 8) | (sizes[2] << 16) | (std::size_t{sizes[3]} << 24);
+    // After the two 4-byte sizes, which the layout check has read.
+    const auto compressed = static_cast<std::size_t> (layout.compressed_size);
+    file.seekg (static_cast<std::streamoff> (layout.data_offset + 8));
     std::vector<std::uint8_t> packed (compressed), by_field (bytes);
     readBytes (file, packed.data(), compressed);
     if (!lzfDecompress (packed.data(), compressed, by_field.data(), bytes))

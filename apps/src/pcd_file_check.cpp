@@ -398,10 +398,10 @@ allZeros (std::istream& file, std::uint64_t offset, std::uint64_t size)
 
 /** The binary data: the header's points, then nothing or zeros (PCL's writer of
  * PCLPointCloud2 pads the file with up to a page of zeros, which its reader ignores);
- * or their compressed form. */
+ * or their compressed form, whose size goes into \a layout. */
 void
 checkBinaryData (std::istream& file,
-                 const PCDLayout& layout,
+                 PCDLayout& layout,
                  std::uint64_t points,
                  std::uint64_t available)
 {
@@ -444,6 +444,7 @@ checkBinaryData (std::istream& file,
     PCL_THROW_EXCEPTION (pcl::IOException,
                          points << " points (" << bytes << " bytes) cannot come from "
                                 << compressed << " compressed bytes");
+  layout.compressed_size = compressed;
 }
 
 } // namespace

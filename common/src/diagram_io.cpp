@@ -240,10 +240,6 @@ readDiagramFrom (std::istream& in, const std::string& source)
   reader.fail ("expected the header \"dim,birth,death\" or Ripser's output");
 }
 
-} // namespace
-
-namespace {
-
 /** Longest text of a filtration value: a double's shortest form takes at most 24. */
 constexpr std::size_t MAX_VALUE_TEXT = 32;
 

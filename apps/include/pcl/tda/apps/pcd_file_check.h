@@ -21,6 +21,9 @@ struct PCDLayout {
   PCDData data = PCDData::ASCII;
   /** \brief The number of bytes before the points. */
   std::uint64_t data_offset = 0;
+  /** \brief binary_compressed only: the bytes of LZF data after the two sizes at
+   * data_offset. */
+  std::uint64_t compressed_size = 0;
 };
 
 /** \brief At most this many points in a PCD file: PCL's index type is 32-bit. */
