@@ -57,8 +57,9 @@ printHelp (const char* program)
   print_info ("    -plane_dist D = distance to the plane of removed points (default "
               "0.01)\n");
   print_info ("    -leaf L     = voxel grid leaf applied last (default 0 = off)\n");
-  print_info ("    -memory M   = refuse radius graphs over M MiB (default: half of "
-              "the memory)\n");
+  print_info ("    -memory M   = most memory for the pairs of points listed at once, "
+              "in MiB (default:\n                  half of the memory; beyond it the "
+              "clusters come from slower searches)\n");
   print_info ("    -svg F.svg  = also draw the H0 barcode (with the chosen cut)\n");
   print_info (
       "    -png        = also write the SVG picture as PNG beside it (F.png)\n");
@@ -152,9 +153,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   std::vector<pcl::PointIndices> clusters;
   extraction.extract (clusters);
   if (extraction.getPersistenceDiagram().empty()) {
-    console.error ("Clustering failed (see above). For a radius graph over the memory "
-                   "limit: set a larger one with -memory M (MiB), or use a smaller "
-                   "-radius or a voxel grid (-leaf).");
+    console.error ("Clustering failed (see above).");
     return 1;
   }
   std::ostringstream clustered;
@@ -169,6 +168,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     point.label = 0;
     point.r = point.g = point.b = 128;
   }
+  constexpr std::size_t MAX_LINES = 30;
   for (std::size_t c = 0; c < clusters.size(); ++c) {
     const auto colour = pcl::tda::labelColor (c + 1);
     Eigen::Vector4f centroid = Eigen::Vector4f::Zero();
@@ -181,13 +181,16 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       centroid += point.getVector4fMap();
     }
     centroid /= static_cast<float> (clusters[c].indices.size());
-    print_info ("  cluster %zu: %zu points, centroid (%.3f, %.3f, %.3f)\n",
-                c + 1,
-                clusters[c].indices.size(),
-                centroid[0],
-                centroid[1],
-                centroid[2]);
+    if (c < MAX_LINES)
+      print_info ("  cluster %zu: %zu points, centroid (%.3f, %.3f, %.3f)\n",
+                  c + 1,
+                  clusters[c].indices.size(),
+                  centroid[0],
+                  centroid[1],
+                  centroid[2]);
   }
+  if (clusters.size() > MAX_LINES)
+    print_info ("  ... and %zu smaller clusters\n", clusters.size() - MAX_LINES);
 
   console.beginStep ("Saving", options.output);
   try {

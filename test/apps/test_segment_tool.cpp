@@ -15,6 +15,7 @@
 #include "test_data.h"
 #include "tool_runner.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <iterator>
@@ -155,6 +156,44 @@ TEST (SegmentTool, OrganizedTableSceneSameAsPCL)
       clusters,
       pcl::tda::test::pclEuclideanClusters<pcl::PointXYZ> (expected_cloud, 0.02, 32)));
   EXPECT_GE (clusters.size(), 2u);
+}
+
+// A distance far above the spacing, on the whole table scene: every pair of its
+// 209k finite points lies within it, and the one cluster holds them all (no memory
+// refusal: the spanning forest's Borůvka rounds take over). At a distance below the
+// spacing every point is a cluster of its own, and only the 30 largest get a line.
+TEST (SegmentTool, AnyDistanceOnTheWholeTableScene)
+{
+  PCL_TDA_REQUIRE_DATA ("table_scene_mug_stereo_textured.pcd");
+  const std::string input =
+      pcl::tda::test::dataFile ("table_scene_mug_stereo_textured.pcd");
+  pcl::PointCloud<pcl::PointXYZ> raw;
+  ASSERT_EQ (pcl::io::loadPCDFile (input, raw), 0);
+  const auto finite = static_cast<std::size_t> (
+      std::count_if (raw.begin(), raw.end(), [] (const pcl::PointXYZ& point) {
+        return pcl::isXYZFinite (point);
+      }));
+  const std::string output = temporaryPath ("labels.pcd");
+
+  RunResult result = runTool (input + " " + output + " -radius 10 -plane 0");
+  ASSERT_EQ (result.exit_code, 0) << result.output;
+  EXPECT_NE (result.output.find ("1 clusters at distance 10"), std::string::npos)
+      << result.output;
+  LabelledCloud labelled;
+  ASSERT_EQ (pcl::io::loadPCDFile (output, labelled), 0);
+  ASSERT_EQ (labelled.size(), finite);
+  EXPECT_EQ (checkLabels (labelled).size(), 1u);
+
+  result = runTool (input + " " + output + " -radius 1e-6 -plane 0");
+  ASSERT_EQ (result.exit_code, 0) << result.output.substr (0, 2000);
+  ASSERT_EQ (pcl::io::loadPCDFile (output, labelled), 0);
+  const std::size_t clusters = checkLabels (labelled).size();
+  EXPECT_GT (clusters, 100000u);
+  EXPECT_EQ (countOccurrences (result.output, "  cluster "), 30u);
+  EXPECT_NE (result.output.find ("  ... and " + std::to_string (clusters - 30) +
+                                 " smaller clusters"),
+             std::string::npos)
+      << result.output.substr (0, 2000);
 }
 
 TEST (SegmentTool, RefusesBadInputWithClearErrors)

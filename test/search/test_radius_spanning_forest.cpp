@@ -46,12 +46,13 @@ forestOf (const std::vector<Point3d>& points,
           double radius,
           const Accept& accept,
           unsigned int threads,
-          ComplexSize& size)
+          std::size_t& most_listed,
+          std::size_t memory_limit = std::size_t{1} << 30)
 {
   std::vector<FilteredEdge> forest;
-  const MemoryBudget budget{std::size_t{1} << 30, 24, 0};
-  EXPECT_TRUE (radiusGraphSpanningForest (
-      points, radius, accept, threads, budget, forest, size));
+  const MemoryBudget budget{memory_limit, 24, 0};
+  most_listed =
+      radiusGraphSpanningForest (points, radius, accept, threads, budget, forest);
   return forest;
 }
 
@@ -68,8 +69,8 @@ TEST (RadiusSpanningForest, IsTheForestOfTheBruteForceGraphWithAPairTest)
     std::vector<FilteredEdge> edges = bruteForceEdges (points, radius, true);
     const auto expected = minimumSpanningForest (points.size(), edges);
     for (const unsigned int threads : {1u, 2u}) {
-      ComplexSize size;
-      const auto forest = forestOf (points, radius, OddSum{}, threads, size);
+      std::size_t most_listed = 0;
+      const auto forest = forestOf (points, radius, OddSum{}, threads, most_listed);
       expectSameEdges (forest, expected, "case " + std::to_string (k));
     }
   }
@@ -90,34 +91,84 @@ TEST (RadiusSpanningForest, SeveralScalesGiveTheForestOfTheWholeGraph)
       const double graph_edges = static_cast<double> (edges.size());
       const auto expected = minimumSpanningForest (points.size(), edges);
       for (const unsigned int threads : {1u, 2u}) {
-        ComplexSize size;
+        std::size_t most_listed = 0;
         const auto forest =
-            odd_sum ? forestOf (points, radius, OddSum{}, threads, size)
-                    : forestOf (points, radius, AcceptAllPairs{}, threads, size);
+            odd_sum ? forestOf (points, radius, OddSum{}, threads, most_listed)
+                    : forestOf (points, radius, AcceptAllPairs{}, threads, most_listed);
         const std::string what = "case " + std::to_string (k) +
                                  (odd_sum ? ", odd sums" : "") + ", " +
                                  std::to_string (threads) + " threads";
         expectSameEdges (forest, expected, what);
-        EXPECT_LT (size.edges, graph_edges) << what;
+        EXPECT_LT (static_cast<double> (most_listed), graph_edges) << what;
       }
     }
   }
 }
 
-// A scale whose edges are over the budget gives no forest and says it is over.
-TEST (RadiusSpanningForest, RefusedOverBudget)
+// A scale whose edges are over the budget, or whose pairs across are too many to look
+// at, is searched by Borůvka's rounds instead: the same forest, edge for edge, with
+// ties, duplicates and a pair test, for 1 and 2 threads, holding one edge per point.
+TEST (RadiusSpanningForest, OverTheBudgetBoruvkaGivesTheSameForest)
 {
   std::mt19937 random (23);
+  for (unsigned int k = 0; k < 12; ++k) {
+    const std::vector<Point3d> points = blobs (random, 2 + k % 5, 300 + 40 * k);
+    const double radius = 0.2 + 0.15 * (k % 6);
+    for (const bool odd_sum : {false, true}) {
+      std::vector<FilteredEdge> edges = bruteForceEdges (points, radius, odd_sum);
+      const auto expected = minimumSpanningForest (points.size(), edges);
+      for (const unsigned int threads : {1u, 2u})
+        for (const std::size_t memory_limit : {std::size_t{0}, std::size_t{50000}}) {
+          std::size_t most_listed = 0;
+          const auto forest =
+              odd_sum
+                  ? forestOf (
+                        points, radius, OddSum{}, threads, most_listed, memory_limit)
+                  : forestOf (points,
+                              radius,
+                              AcceptAllPairs{},
+                              threads,
+                              most_listed,
+                              memory_limit);
+          const std::string what = "case " + std::to_string (k) +
+                                   (odd_sum ? ", odd sums" : "") + ", " +
+                                   std::to_string (threads) + " threads, limit " +
+                                   std::to_string (memory_limit);
+          expectSameEdges (forest, expected, what);
+          EXPECT_LE (most_listed * 24, std::max (memory_limit, points.size() * 24))
+              << what;
+        }
+    }
+  }
+}
+
+// Two sheets 0.4 apart, at a radius that holds both: the pairs across are 4e8, too
+// many to look at; Borůvka's searches join the sheets with the one shortest pair
+// across, the one a brute-force search finds.
+TEST (RadiusSpanningForest, LargeComponentsWithinTheRadiusJoinedByTheirShortestPair)
+{
+  std::mt19937 random (37);
   std::uniform_real_distribution<double> coordinate (0.0, 1.0);
-  std::vector<Point3d> points (5000);
-  for (auto& point : points)
-    point = {coordinate (random), coordinate (random), 0.0};
-  std::vector<FilteredEdge> forest{{0, 1, 0.0}};
-  ComplexSize size;
-  ASSERT_FALSE (radiusGraphSpanningForest (
-      points, 0.1, AcceptAllPairs{}, 0, MemoryBudget{1000, 24, 0}, forest, size));
-  EXPECT_TRUE (forest.empty());
-  EXPECT_GT (size.edges * 24, 1000.0);
+  std::vector<Point3d> points;
+  for (int i = 0; i < 40000; ++i)
+    points.push_back ({coordinate (random), coordinate (random), i % 2 ? 0.0 : 0.4});
+  std::size_t most_listed = 0;
+  const auto forest = forestOf (points, 1.0, AcceptAllPairs{}, 0, most_listed);
+  ASSERT_EQ (forest.size(), points.size() - 1);
+  FilteredEdge across = NO_EDGE;
+  for (std::uint32_t a = 0; a < points.size(); a += 2)
+    for (std::uint32_t b = 1; b < points.size(); b += 2)
+      if (std::abs (points[a][0] - points[b][0]) < 0.01 &&
+          std::abs (points[a][1] - points[b][1]) < 0.01) {
+        const FilteredEdge edge{
+            std::min (a, b), std::max (a, b), distance (points[a], points[b])};
+        across = std::min (across, edge, edgeFiltrationLess);
+      }
+  EXPECT_EQ (forest.back().source, across.source);
+  EXPECT_EQ (forest.back().target, across.target);
+  EXPECT_EQ (forest.back().value, across.value);
+  EXPECT_LE (static_cast<double> (most_listed),
+             SPANNING_FOREST_VISITS_PER_POINT * static_cast<double> (points.size()));
 }
 
 // Thousands of copies of a few points, among other points: the copies are joined
@@ -135,19 +186,20 @@ TEST (RadiusSpanningForest, CopiesOfAPointAreJoinedFirst)
   for (const bool odd_sum : {false, true}) {
     std::vector<FilteredEdge> edges = bruteForceEdges (points, 0.2, odd_sum);
     const auto expected = minimumSpanningForest (points.size(), edges);
-    ComplexSize size;
-    const auto forest = odd_sum ? forestOf (points, 0.2, OddSum{}, 2, size)
-                                : forestOf (points, 0.2, AcceptAllPairs{}, 2, size);
+    std::size_t most_listed = 0;
+    const auto forest = odd_sum
+                            ? forestOf (points, 0.2, OddSum{}, 2, most_listed)
+                            : forestOf (points, 0.2, AcceptAllPairs{}, 2, most_listed);
     expectSameEdges (forest, expected, odd_sum ? "odd sums" : "all pairs");
   }
 
   const std::vector<Point3d> copies (20000, Point3d{0.5, 0.5, 0.5});
-  ComplexSize size;
-  const auto forest = forestOf (copies, 0.01, AcceptAllPairs{}, 0, size);
+  std::size_t most_listed = 0;
+  const auto forest = forestOf (copies, 0.01, AcceptAllPairs{}, 0, most_listed);
   ASSERT_EQ (forest.size(), copies.size() - 1);
   for (SimplexIndex e = 0; e < forest.size(); ++e) {
     EXPECT_EQ (forest[e].source, 0u);
     EXPECT_EQ (forest[e].target, e + 1);
   }
-  EXPECT_EQ (size.edges, 0.0);
+  EXPECT_EQ (most_listed, 0u);
 }

@@ -469,26 +469,46 @@ TEST (PersistentEuclideanClusterExtraction, RefusesBadInputWithClearErrors)
   bad_ratio.setAutoGapRatio (1.0);
   EXPECT_TRUE (contains (errorOf (bad_ratio), "gap ratio"));
 
-  // A radius graph over the memory limit is refused before it is stored, with the
-  // search object too; the limit is the only obstacle.
+  // With the search object, a radius graph over the memory limit is refused before
+  // it is stored; the limit is the only obstacle. Without one, the forest is found
+  // within the limit (Borůvka's searches where a scale's edges would not fit), the
+  // same as without a limit.
   Cloud::Ptr cube (new Cloud);
   std::mt19937 random (29);
   std::uniform_real_distribution<float> coordinate (0.0f, 1.0f);
   for (int i = 0; i < 5000; ++i)
     cube->push_back ({coordinate (random), coordinate (random), coordinate (random)});
-  for (const bool with_tree : {false, true}) {
-    Extraction over_limit;
-    over_limit.setInputCloud (cube);
-    over_limit.setMaxDistance (0.5);
-    over_limit.setMemoryLimit (1u << 20);
-    if (with_tree)
-      over_limit.setSearchMethod (pcl::search::KdTree<pcl::PointXYZ>::Ptr (
-          new pcl::search::KdTree<pcl::PointXYZ>));
-    const std::string error = errorOf (over_limit);
-    EXPECT_TRUE (contains (error, "over the memory limit of 1.0 MiB")) << error;
-    EXPECT_TRUE (contains (error, with_tree ? "would have" : "would list more than"))
-        << error;
-    EXPECT_TRUE (contains (error, "setMemoryLimit()")) << error;
+  Extraction over_limit;
+  over_limit.setInputCloud (cube);
+  over_limit.setMaxDistance (0.5);
+  over_limit.setMemoryLimit (1u << 20);
+  over_limit.setSearchMethod (
+      pcl::search::KdTree<pcl::PointXYZ>::Ptr (new pcl::search::KdTree<pcl::PointXYZ>));
+  const std::string error = errorOf (over_limit);
+  EXPECT_TRUE (contains (error, "over the memory limit of 1.0 MiB")) << error;
+  EXPECT_TRUE (contains (error, "would have")) << error;
+  EXPECT_TRUE (contains (error, "setMemoryLimit()")) << error;
+  for (const std::size_t memory_limit : {std::size_t{1} << 20, std::size_t{0}}) {
+    Extraction limited, unlimited;
+    for (Extraction* extraction : {&limited, &unlimited}) {
+      extraction->setInputCloud (cube);
+      extraction->setMaxDistance (0.5);
+      extraction->setAutoMaxDistance (true);
+    }
+    limited.setMemoryLimit (memory_limit);
+    std::vector<pcl::PointIndices> limited_clusters, unlimited_clusters;
+    limited.extract (limited_clusters);
+    unlimited.extract (unlimited_clusters);
+    EXPECT_TRUE (compareDiagrams (limited.getPersistenceDiagram(),
+                                  unlimited.getPersistenceDiagram(),
+                                  0.0)
+                     .equal);
+    EXPECT_EQ (limited.getChosenDistance(), unlimited.getChosenDistance());
+    EXPECT_LE (limited.getNumEdges() * Extraction::BYTES_PER_EDGE,
+               std::max (memory_limit, cube->size() * Extraction::BYTES_PER_EDGE));
+    ASSERT_EQ (limited_clusters.size(), unlimited_clusters.size());
+    for (std::size_t c = 0; c < limited_clusters.size(); ++c)
+      EXPECT_EQ (limited_clusters[c].indices, unlimited_clusters[c].indices);
   }
   Extraction within_limit;
   within_limit.setInputCloud (cube);

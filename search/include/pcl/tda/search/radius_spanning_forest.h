@@ -5,6 +5,7 @@
 #include <pcl/tda/common/point3d.h>
 #include <pcl/tda/common/spanning_forest.h>
 #include <pcl/tda/common/union_find.h>
+#include <pcl/tda/search/boruvka_forest.h>
 #include <pcl/tda/search/complex_size.h>
 #include <pcl/tda/search/radius_edges.h>
 #include <pcl/tda/search/uniform_grid.h>
@@ -22,6 +23,11 @@ namespace tda {
 /** \brief Candidate pairs per point below which radiusGraphSpanningForest() lists a
  * scale's edges without looking at a finer scale first. */
 constexpr double SPANNING_FOREST_PAIRS_PER_POINT = 128.0;
+
+/** \brief Pairs per point that radiusGraphSpanningForest() looks at, at most, to
+ * count a scale's pairs across components before it takes Borůvka's searches for the
+ * rest of the forest instead. */
+constexpr double SPANNING_FOREST_VISITS_PER_POINT = 256.0;
 
 /** \brief Most scales radiusGraphSpanningForest() looks at (the radius and its
  * halves): where many points lie closer than any scale (copies apart by a rounding
@@ -150,35 +156,33 @@ private:
  * 2 mm apart) the search looks at a few pairs per point instead of thousands, and the
  * forest is the same as that of the whole graph, edge for edge.
  *
- * Memory guard: a scale's pairs are counted before they are listed, and the count is
- * abandoned soon after they would not fit \a budget (within a few thousand edges
- * per thread); where the grid's candidate pairs are far over the budget, a sample of
- * the points (estimateComplexSize()) first refuses the scale when its pairs are over
- * twice the budget. So the refusal takes bounded time on any input.
+ * A scale is listed only when it is cheap: its pairs across components are counted
+ * first, and the count stops once their edges would not fit \a budget or once
+ * SPANNING_FOREST_VISITS_PER_POINT pairs per point were looked at (two large
+ * components within a scale of each other: a million pairs across where one edge
+ * joins them). From that scale on, extendSpanningForestByBoruvka() finds the rest of
+ * the forest, holding one edge per point. So the forest is never refused, whatever
+ * the radius: the memory is bounded by \a budget and the points, and the time by the
+ * searches, not by the graph's pairs.
  * \param[in] points the points, vertex v at points[v]
  * \param[in] radius the largest edge length (> 0)
- * \param[in] accept the extra test of a pair (a, b) of vertex ids within the radius,
- * the same for a pair at any scale
+ * \param[in] accept the extra symmetric test of a pair (a, b) of vertex ids within the
+ * radius, the same for a pair at any scale
  * \param[in] threads OpenMP threads (0: OpenMP's default)
- * \param[in] budget the memory one scale's edges may take (bytes_per_edge > 0)
+ * \param[in] budget the memory one scale's listed edges may take (bytes_per_edge > 0)
  * \param[out] forest the forest's edges in filtration order
- * \param[out] size edges: the most edges listed at one scale; on refusal, the edges
- * counted before the count stopped (exact true: there are more) or estimated from a
- * sample (exact false)
- * \return false, with \a forest empty, when a scale's edges are over the budget
+ * \return the most edges listed at one scale
  * \throws pcl::BadArgumentException as UniformGrid */
 template <typename Accept>
-bool
+std::size_t
 radiusGraphSpanningForest (const std::vector<Point3d>& points,
                            double radius,
                            const Accept& accept,
                            unsigned int threads,
                            const MemoryBudget& budget,
-                           std::vector<FilteredEdge>& forest,
-                           ComplexSize& size)
+                           std::vector<FilteredEdge>& forest)
 {
   forest.clear();
-  size = ComplexSize{};
   UnionFind components (points.size());
   // Where the radius graph is sparse, one scale: its grid is the only one.
   const UniformGrid top (points, radius, threads);
@@ -187,6 +191,9 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
       SPANNING_FOREST_PAIRS_PER_POINT * static_cast<double> (points.size()))
     scales = spanningForestScales (
         joinCopies (points, accept, components, forest), radius, threads);
+  const double max_visits =
+      SPANNING_FOREST_VISITS_PER_POINT * static_cast<double> (points.size());
+  std::size_t most_listed = 0;
   for (const double scale : scales) {
     const std::optional<UniformGrid> finer =
         scale < radius
@@ -199,44 +206,41 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
     };
     const auto num_cells = static_cast<std::int64_t> (grid.numCells());
     std::vector<std::uint64_t> offsets (grid.numCells() + 1, 0);
-    // The count pass, abandoned soon after the edges would not fit.
-    const auto count_edges = [&] () {
-      std::atomic<std::uint64_t> counted{0};
+    // The count pass, abandoned soon after it is over the budget or the visits.
+    std::atomic<std::uint64_t> counted{0}, visited{0};
+    std::atomic<bool> cheap{true};
+    const auto report = [&] (std::uint64_t count, std::uint64_t visits) {
+      const auto edges = static_cast<double> (counted += count);
+      const auto pairs = static_cast<double> (visited += visits);
+      if (!budget.fits (edges, 0.0) || pairs > max_visits)
+        cheap = false;
+    };
 #pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
-      for (std::int64_t c = 0; c < num_cells; ++c) {
-        std::uint64_t count = 0, reported = 0;
-        runs.forEachPairAcross (
-            c,
-            [&] (std::uint32_t a, std::uint32_t b) { count += joins (a, b); },
-            [&] () { // checked every few thousand edges
-              if (count - reported < 4096)
-                return true;
-              counted += count - reported;
-              reported = count;
-              return budget.fits (
-                  static_cast<double> (counted.load (std::memory_order_relaxed)), 0.0);
-            });
-        counted += count - reported;
-        offsets[c + 1] = count;
-      }
-      return EdgeCountSummary{counted.load(), 0};
-    };
-    // Where two large components lie within the scale of each other, far more
-    // candidates than the budget holds: a sample of the pairs across decides first.
-    const auto estimate = [&] () {
-      const auto across = [&] (std::uint32_t a, std::uint32_t b) {
-        return runs.apart (a, b) && accept (a, b);
-      };
-      return estimateComplexSize (grid, points, scale, across, threads, 4096, 4096, 0);
-    };
-    ComplexSize listed;
-    if (!countEdgesWithinBudget (
-            budget, grid.numCandidatePairs(), count_edges, estimate, listed)) {
-      size = listed; // counted up to where it was over (exact), or estimated
-      forest.clear();
-      return false;
+    for (std::int64_t c = 0; c < num_cells; ++c) {
+      std::uint64_t count = 0, visits = 0, reported_count = 0, reported_visits = 0;
+      runs.forEachPairAcross (
+          c,
+          [&] (std::uint32_t a, std::uint32_t b) {
+            ++visits;
+            count += joins (a, b);
+          },
+          [&] () { // checked before each point, reported every few thousand pairs
+            if (visits - reported_visits >= 4096) {
+              report (count - reported_count, visits - reported_visits);
+              reported_count = count;
+              reported_visits = visits;
+            }
+            return cheap.load (std::memory_order_relaxed);
+          });
+      report (count - reported_count, visits - reported_visits);
+      offsets[c + 1] = count;
     }
-    size.edges = std::max (size.edges, listed.edges);
+    if (!cheap) {
+      extendSpanningForestByBoruvka (
+          points, radius, accept, threads, components, forest);
+      return std::max (most_listed, points.size());
+    }
+    most_listed = std::max (most_listed, static_cast<std::size_t> (counted.load()));
     std::partial_sum (offsets.begin(), offsets.end(), offsets.begin());
     auto edges = largeVector<FilteredEdge> (offsets.back());
 #pragma omp parallel for schedule(dynamic, 64) num_threads(resolveThreads(threads))
@@ -253,7 +257,7 @@ radiusGraphSpanningForest (const std::vector<Point3d>& points,
     }
     extendSpanningForest (edges, components, forest);
   }
-  return true;
+  return most_listed;
 }
 
 } // namespace tda

@@ -310,14 +310,17 @@ public:
     return auto_min_distance_;
   }
 
-  /** \brief Bytes per edge of the radius graph at the peak of extract(); the memory
-   * limit is checked against it before the edges are stored. */
+  /** \brief Bytes per edge of the radius graph at the peak of extract(): with a
+   * search method, the memory limit refuses a graph whose edges would not fit; without
+   * one, a scale whose edges would not fit is searched by Borůvka's rounds instead
+   * (radiusGraphSpanningForest()), so no max distance is refused. */
   static constexpr std::size_t BYTES_PER_EDGE = sizeof (FilteredEdge);
 
   /** \brief Extracts the clusters of the input points (or of the indexed ones).
    * On failure (no input, no finite point, max distance not positive and finite,
-   * min size above max size, a bad gap ratio, a graph over the memory limit)
-   * prints a PCL_ERROR naming the problem and leaves \a clusters empty. */
+   * min size above max size, a bad gap ratio, with a search method a graph over the
+   * memory limit) prints a PCL_ERROR naming the problem and leaves \a clusters
+   * empty. */
   void
   extract (std::vector<pcl::PointIndices>& clusters);
 
@@ -360,7 +363,8 @@ public:
   /** \brief Number of edges the last extract() listed: with a search method, the
    * edges of the radius graph; without one, the most edges listed at one scale of
    * radiusGraphSpanningForest(), pairs of points not yet joined (far fewer than the
-   * graph's edges when the max distance is large). */
+   * graph's edges when the max distance is large), or one per point where Borůvka's
+   * rounds took over. */
   std::size_t
   getNumEdges () const
   {

@@ -122,19 +122,17 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
   }
   const MemoryBudget budget{memory_limit_, BYTES_PER_EDGE, 0};
   std::vector<FilteredEdge> forest;
-  ComplexSize size;
-  bool fits = false;
   try {
     if (pcl_distance_test_) {
       const auto accept = [this, &point_of] (SimplexIndex a, SimplexIndex b) {
         return passesPCLDistanceTest (point_of[a], point_of[b]);
       };
-      fits = radiusGraphSpanningForest (
-          points, radius, accept, threads_, budget, forest, size);
+      num_edges_ =
+          radiusGraphSpanningForest (points, radius, accept, threads_, budget, forest);
     }
     else
-      fits = radiusGraphSpanningForest (
-          points, radius, AcceptAllPairs{}, threads_, budget, forest, size);
+      num_edges_ = radiusGraphSpanningForest (
+          points, radius, AcceptAllPairs{}, threads_, budget, forest);
   }
   catch (const pcl::PCLException& error) {
     PCL_ERROR ("[pcl::tda::%s::extract] %s\n",
@@ -142,20 +140,6 @@ PersistentEuclideanClusterExtraction<PointT>::buildGraph (FilteredComplex& compl
                errorMessage (error).c_str());
     return false;
   }
-  if (!fits) {
-    PCL_ERROR ("[pcl::tda::%s::extract] The spanning forest up to max distance %g "
-               "would list %s%.0f edges%s at one scale (the points are that dense), "
-               "over the memory limit of %s. Use a smaller max distance, a voxel grid, "
-               "or a larger limit (setMemoryLimit()).\n",
-               getClassName().c_str(),
-               max_distance_,
-               size.exact ? "more than " : "about ",
-               size.edges,
-               size.exact ? "" : " (estimated from a sample)",
-               formatBytes (static_cast<double> (memory_limit_)).c_str());
-    return false;
-  }
-  num_edges_ = static_cast<std::size_t> (size.edges);
   complex = FilteredComplex::adoptValidParts (
       points.size(), std::move (forest), {}, std::move (point_of));
   return true;
