@@ -88,7 +88,7 @@ readErrorOf (const std::string& text)
 class TemporaryFolder {
 public:
   TemporaryFolder()
-  : path_ (std::filesystem::temp_directory_path() /
+  : path_ (std::filesystem::path (::testing::TempDir()) /
            ("pcl_tda_test_diagram_io_" + std::to_string (::getpid())))
   {
     std::filesystem::remove_all (path_);

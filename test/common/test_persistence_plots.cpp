@@ -628,7 +628,7 @@ TEST (BarcodeSVG, DrawsTheCutLineAndTheUnit)
 TEST (PersistencePlots, SaveWritesTheFileOrThrows)
 {
   const std::string path =
-      (std::filesystem::temp_directory_path() /
+      (std::filesystem::path (::testing::TempDir()) /
        ("test_persistence_plots_" + std::to_string (::getpid()) + ".svg"))
           .string();
   const auto read = [&] {

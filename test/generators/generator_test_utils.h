@@ -119,11 +119,11 @@ deltaE (const Region& a, const Region& b)
                     (lab_a.b - lab_b.b) * (lab_a.b - lab_b.b));
 }
 
-/** \brief A fresh folder under the system temporary folder, removed at the end. */
+/** \brief A fresh folder under the tests' temporary folder, removed at the end. */
 class TemporaryFolder {
 public:
   TemporaryFolder()
-  : path_ (std::filesystem::temp_directory_path() /
+  : path_ (std::filesystem::path (::testing::TempDir()) /
            ("pcl_tda_synthetic_" + std::to_string (::getpid()) + "_" +
             ::testing::UnitTest::GetInstance()->current_test_info()->name()))
   {
