@@ -17,6 +17,7 @@
 #include <pcl/tda/common/progress_bar.h>
 #include <pcl/tda/gpu/vietoris_rips_builder.h>
 #include <pcl/tda/search/clique_persistence.h>
+#include <pcl/tda/search/radius_edges.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
@@ -261,6 +262,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   }
   else {
     pcl::tda::VietorisRipsBuilder<pcl::PointXYZ> builder;
+    builder.setNumberOfThreads (pcl::tda::threadsForPoints (0, cloud->size()));
     built = buildComplex (builder, options, cloud, complex, report);
   }
   if (!built) {
@@ -294,8 +296,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       progress.update (done, total);
     };
     if (triangleFree (options)) {
-      const pcl::tda::CliqueH1Persistence h1 =
-          pcl::tda::computeCliqueH1Persistence (complex, result, 0, report_progress);
+      const pcl::tda::CliqueH1Persistence h1 = pcl::tda::computeCliqueH1Persistence (
+          complex,
+          result,
+          pcl::tda::threadsForPoints (0, complex.numVertices()),
+          report_progress);
       diagram.insert (diagram.end(), h1.diagram.begin(), h1.diagram.end());
       num_triangles = h1.num_triangles;
     }

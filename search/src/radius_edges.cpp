@@ -16,6 +16,16 @@ resolveThreads (unsigned int threads)
   return threads > 0 ? static_cast<int> (threads) : omp_get_max_threads();
 }
 
+unsigned int
+threadsForPoints (unsigned int threads, std::size_t points)
+{
+  if (threads > 0)
+    return threads;
+  const auto most = static_cast<std::size_t> (resolveThreads (0));
+  return static_cast<unsigned int> (
+      std::clamp<std::size_t> (points / POINTS_PER_THREAD, 1, most));
+}
+
 namespace {
 
 /** The candidates of \a vertex that are later vertices within \a radius, sorted. */

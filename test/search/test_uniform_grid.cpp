@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "search/grid_test_utils.h"
+#include <omp.h>
 
 #include <algorithm>
 #include <random>
@@ -101,4 +102,17 @@ TEST (UniformGrid, AnyExtentWithOutliers)
                      bruteForceEdges (points, radius, false),
                      "radius " + std::to_string (radius));
   }
+}
+
+// A one-off run gets one thread per POINTS_PER_THREAD points, at least one and at
+// most OpenMP's default; a thread count that is set is taken as it is.
+TEST (UniformGrid, ThreadsForPoints)
+{
+  const auto most = static_cast<unsigned int> (omp_get_max_threads());
+  EXPECT_EQ (threadsForPoints (0, 0), 1u);
+  EXPECT_EQ (threadsForPoints (0, POINTS_PER_THREAD - 1), 1u);
+  EXPECT_EQ (threadsForPoints (0, 2 * POINTS_PER_THREAD), std::min (2u, most));
+  EXPECT_EQ (threadsForPoints (0, 1000 * POINTS_PER_THREAD), most);
+  EXPECT_EQ (threadsForPoints (3, 10), 3u);
+  EXPECT_EQ (resolveThreads (0), static_cast<int> (most));
 }
