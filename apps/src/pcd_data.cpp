@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -51,11 +52,31 @@ storeInteger (double value, std::uint8_t* out)
   return true;
 }
 
-/** Reads the number at \a text as a value of type \a datatype into \a out; \a text
- * moves past it. False when the number does not fit the type. */
+/** Reads the number at \a text (in a text that ends at \a text_end) as a value of
+ * type \a datatype into \a out; \a text moves past it. False when the number does
+ * not fit the type. */
 bool
-readValue (const char*& text, std::uint8_t datatype, std::uint8_t* out)
+readValue (const char*& text,
+           const char* text_end,
+           std::uint8_t datatype,
+           std::uint8_t* out)
 {
+  // std::from_chars first, several times faster than strtof and strtod and as
+  // exact (the correctly rounded value); they read what it does not read whole or
+  // in range (a leading '+', hexadecimal, overflow, underflow).
+  if (datatype == pcl::PCLPointField::FLOAT32 ||
+      datatype == pcl::PCLPointField::FLOAT64) {
+    const auto read = [&] (auto value) {
+      const auto [ptr, error] = std::from_chars (text, text_end, value);
+      if (error != std::errc{} || ptr == text || (*ptr != '\0' && !isSpace (*ptr)))
+        return false;
+      text = ptr;
+      std::memcpy (out, &value, sizeof (value));
+      return true;
+    };
+    if (datatype == pcl::PCLPointField::FLOAT32 ? read (0.0f) : read (0.0))
+      return true;
+  }
   char* end = nullptr;
   errno = 0;
   if (datatype == pcl::PCLPointField::FLOAT32) {
@@ -111,6 +132,7 @@ void
 readASCII (const std::string& text, pcl::PCLPointCloud2& cloud)
 {
   const char* at = text.c_str();
+  const char* const text_end = at + text.size();
   const std::size_t points = std::size_t{cloud.width} * cloud.height;
   for (std::size_t p = 0; p < points; ++p)
     for (const auto& field : cloud.fields) {
@@ -120,7 +142,8 @@ readASCII (const std::string& text, pcl::PCLPointCloud2& cloud)
         while (isSpace (*at))
           ++at;
         const char* number = at;
-        const bool fits = *number != '\0' && readValue (at, field.datatype, out);
+        const bool fits =
+            *number != '\0' && readValue (at, text_end, field.datatype, out);
         if (!fits || at == number || (*at != '\0' && !isSpace (*at)))
           PCL_THROW_EXCEPTION (pcl::IOException,
                                "point " << p + 1 << " of the ASCII data has "

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <charconv>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace pcl {
@@ -56,24 +58,33 @@ readLine (std::istream& in, std::string& line, bool& cut)
   return true;
 }
 
-/** The words of \a line as PCL's reader splits it: trimmed of white space, then
- * split at spaces, tabs and CRs (so a vertical tab inside stays in a word). */
+/** Calls \a visit (a std::string_view) on each word of \a line as PCL's reader
+ * splits it: trimmed of white space, then split at spaces, tabs and CRs (so a
+ * vertical tab inside stays in a word). */
+template <typename Visit>
+void
+forEachWord (std::string_view line, Visit visit)
+{
+  constexpr std::string_view WHITE_SPACE = " \t\r\n\v\f";
+  constexpr std::string_view SEPARATORS = " \t\r";
+  const auto first = line.find_first_not_of (WHITE_SPACE);
+  if (first == std::string_view::npos)
+    return;
+  const std::string_view trimmed =
+      line.substr (first, line.find_last_not_of (WHITE_SPACE) + 1 - first);
+  for (auto begin = std::size_t{0}; begin != std::string_view::npos;) {
+    const auto end = trimmed.find_first_of (SEPARATORS, begin);
+    visit (trimmed.substr (begin, end - begin));
+    begin = trimmed.find_first_not_of (SEPARATORS, end);
+  }
+}
+
+/** The words of \a line (forEachWord()). */
 std::vector<std::string>
 words (const std::string& line)
 {
-  const char* const WHITE_SPACE = " \t\r\n\v\f";
-  const char* const SEPARATORS = " \t\r";
   std::vector<std::string> result;
-  const auto first = line.find_first_not_of (WHITE_SPACE);
-  if (first == std::string::npos)
-    return result;
-  const std::string trimmed =
-      line.substr (first, line.find_last_not_of (WHITE_SPACE) + 1 - first);
-  for (auto begin = std::size_t{0}; begin != std::string::npos;) {
-    const auto end = trimmed.find_first_of (SEPARATORS, begin);
-    result.push_back (trimmed.substr (begin, end - begin));
-    begin = trimmed.find_first_not_of (SEPARATORS, end);
-  }
+  forEachWord (line, [&result] (std::string_view word) { result.emplace_back (word); });
   return result;
 }
 
@@ -119,13 +130,22 @@ parseCount (const std::string& word,
   return value;
 }
 
-/** True when \a word is a whole number, as strtod reads it (nan and inf too). */
+/** True when \a word is a whole number, as strtod reads it (nan and inf too).
+ * std::from_chars first, several times faster: what it reads whole, strtod does;
+ * strtod for the rest (a leading '+', hexadecimal). */
 bool
-isNumber (const std::string& word)
+isNumber (std::string_view word)
 {
+  if (word.empty())
+    return false;
+  double value;
+  if (std::from_chars (word.data(), word.data() + word.size(), value).ptr ==
+      word.data() + word.size())
+    return true;
+  const std::string text (word);
   char* end = nullptr;
-  std::strtod (word.c_str(), &end);
-  return !word.empty() && end == word.c_str() + word.size();
+  std::strtod (text.c_str(), &end);
+  return end == text.c_str() + text.size();
 }
 
 /** Little-endian 32-bit unsigned integer at \a bytes. */
@@ -347,9 +367,15 @@ checkASCIIData (std::istream& file, std::uint64_t points, std::uint64_t values)
   while (readLine (file, line, cut)) {
     if (line.empty())
       continue; // PCL's reader skips empty lines
-    const std::vector<std::string> numbers = words (line);
+    std::uint64_t count = 0;
+    std::string_view not_a_number;
+    forEachWord (line, [&] (std::string_view number) {
+      ++count;
+      if (not_a_number.empty() && !isNumber (number))
+        not_a_number = number;
+    });
     if (point == points) {
-      if (numbers.empty())
+      if (count == 0)
         continue;
       PCL_THROW_EXCEPTION (pcl::IOException,
                            "the ASCII data has more lines than the " << points
@@ -360,15 +386,15 @@ checkASCIIData (std::istream& file, std::uint64_t points, std::uint64_t values)
       PCL_THROW_EXCEPTION (pcl::IOException,
                            "point " << point << " of the ASCII data is over "
                                     << MAX_LINE << " characters long");
-    if (numbers.size() != values)
+    if (count != values)
+      PCL_THROW_EXCEPTION (pcl::IOException,
+                           "point " << point << " of the ASCII data has " << count
+                                    << " values, not " << values);
+    if (!not_a_number.empty())
       PCL_THROW_EXCEPTION (pcl::IOException,
                            "point " << point << " of the ASCII data has "
-                                    << numbers.size() << " values, not " << values);
-    for (const std::string& number : numbers)
-      if (!isNumber (number))
-        PCL_THROW_EXCEPTION (pcl::IOException,
-                             "point " << point << " of the ASCII data has "
-                                      << quote (number) << ", which is not a number");
+                                    << quote (std::string (not_a_number))
+                                    << ", which is not a number");
   }
   if (point < points)
     PCL_THROW_EXCEPTION (pcl::IOException,

@@ -331,6 +331,51 @@ TEST (PCDData, RefusesASCIIValuesOutsideTheirType)
   EXPECT_EQ (b, 18446744073709551615ULL);
 }
 
+// Every ASCII float and double is the value strtof and strtod read (the correctly
+// rounded one): random decimals of 1 to 20 digits and exponents from -50 to 15, with
+// the spellings the fast reader leaves to them (a leading '+', hexadecimal, out of
+// range: underflow to 0) and signed nan and inf.
+TEST (PCDData, ASCIIValuesAreThoseOfStrtofAndStrtod)
+{
+  std::mt19937 random (43);
+  std::uniform_int_distribution<int> digit (0, 9), digits (1, 20), exponent (-50, 15);
+  std::vector<std::string> words{
+      "+1.5", "0x1p1", "-0x1.8p-3", "1e-50", "-1e-320", "nan", "-nan", "inf", "-inf"};
+  while (words.size() < 3000) {
+    std::string word = random() % 2 ? "-" : "";
+    const int length = digits (random), point = static_cast<int> (random() % 22);
+    for (int i = 0; i < length; ++i)
+      word += (i == point ? "." : "") + std::to_string (digit (random));
+    if (random() % 2)
+      word += "e" + std::to_string (exponent (random));
+    words.push_back (word);
+  }
+  std::string lines;
+  for (const std::string& word : words)
+    lines += "0 0 " + word + " " + word + "\n";
+  const std::string path = temporaryPath ("decimals.pcd");
+  pcl::tda::test::writeFile (
+      path,
+      pcl::tda::test::pcdHeader (
+          "x y z d", "4 4 4 8", "F F F F", words.size(), "ascii") +
+          lines);
+  const pcl::PCLPointCloud2 cloud = readOurs (path);
+  ASSERT_EQ (cloud.width, words.size());
+  for (std::size_t i = 0; i < words.size(); ++i) {
+    float as_float;
+    double as_double;
+    std::memcpy (&as_float, &cloud.data[i * cloud.point_step + 8], sizeof (as_float));
+    std::memcpy (
+        &as_double, &cloud.data[i * cloud.point_step + 12], sizeof (as_double));
+    const float expected_float = std::strtof (words[i].c_str(), nullptr);
+    const double expected_double = std::strtod (words[i].c_str(), nullptr);
+    EXPECT_EQ (std::memcmp (&as_float, &expected_float, sizeof (as_float)), 0)
+        << words[i] << ": " << as_float << " vs " << expected_float;
+    EXPECT_EQ (std::memcmp (&as_double, &expected_double, sizeof (as_double)), 0)
+        << words[i] << ": " << as_double << " vs " << expected_double;
+  }
+}
+
 TEST (PCDData, DecompressesWhatPCLsCompressorWrites)
 {
   std::mt19937_64 random (3);
