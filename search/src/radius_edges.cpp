@@ -2,7 +2,6 @@
 #include <pcl/tda/search/radius_edges.h>
 
 #include <omp.h>
-#include <parallel/algorithm>
 
 #include <algorithm>
 #include <numeric>
@@ -91,17 +90,6 @@ listEdgesBySearch (const std::vector<Point3d>& points,
     }
   }
   return edges;
-}
-
-void
-sortEdges (std::vector<FilteredEdge>& edges, unsigned int threads)
-{
-  // A strict total order: the parallel sort's result does not depend on the threads.
-  __gnu_parallel::sort (
-      edges.begin(),
-      edges.end(),
-      edgeFiltrationLess,
-      __gnu_parallel::default_parallel_tag (resolveThreads (threads)));
 }
 
 } // namespace tda
