@@ -33,17 +33,18 @@ idsByPosition (const std::vector<Point3d>& points)
 ComponentRuns::ComponentRuns (const UniformGrid& grid,
                               UnionFind& components,
                               std::size_t num_points)
-: grid_ (grid), component_ (num_points)
+: grid_ (grid)
 {
+  std::vector<std::uint32_t> component (num_points); // per point
   for (std::uint32_t v = 0; v < num_points; ++v) {
-    component_[v] = components.find (v);
-    all_apart_ = all_apart_ && component_[v] == v;
+    component[v] = components.find (v);
+    all_apart_ = all_apart_ && component[v] == v;
   }
   const std::uint32_t n = grid.numCells() > 0 ? grid.cellBegin (grid.numCells()) : 0;
   component_at_.resize (n);
   run_end_.resize (n);
   for (std::uint32_t i = 0; i < n; ++i)
-    component_at_[i] = component_[grid.pointAt (i)];
+    component_at_[i] = component[grid.pointAt (i)];
   for (std::uint32_t i = n; i-- > 0;)
     run_end_[i] =
         i + 1 < n && component_at_[i + 1] == component_at_[i] ? run_end_[i + 1] : i + 1;

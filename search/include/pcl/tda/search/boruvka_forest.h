@@ -54,6 +54,8 @@ public:
   /** \brief The shortest edge, in the filtration order (length, then ends), from the
    * point at tree position \a position to a point of another component within
    * \a radius (withinRadius()) that passes \a accept, or NO_EDGE.
+   * \param[in] position the point's tree position (0..size()-1)
+   * \param[in] radius the longest edge (> 0)
    * \param[in,out] bound the length of the shortest edge found so far out of this
    * component (shared with the searches from its other points): a part of the tree
    * farther away is not searched, and a shorter edge found lowers it

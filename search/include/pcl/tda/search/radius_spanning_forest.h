@@ -95,13 +95,6 @@ public:
                  UnionFind& components,
                  std::size_t num_points);
 
-  /** \brief Whether points \a a and \b b lie in different components. */
-  bool
-  apart (std::uint32_t a, std::uint32_t b) const
-  {
-    return component_[a] != component_[b];
-  }
-
   /** \brief Calls \a visit(a, b) for the candidate pairs of cell \a cell (as
    * UniformGrid::forEachCandidatePair()) whose points lie in different components;
    * calls \a keep_going() before each point of the cell and stops when it returns
@@ -135,7 +128,6 @@ public:
 private:
   const UniformGrid& grid_;
   bool all_apart_ = true;                   // every point in a component of its own
-  std::vector<std::uint32_t> component_;    // per point: its component
   std::vector<std::uint32_t> component_at_; // per position: its point's component
   std::vector<std::uint32_t> run_end_; // per position: end of its run in one component
 };
