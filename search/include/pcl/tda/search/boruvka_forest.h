@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace pcl {
@@ -117,23 +118,28 @@ ComponentKdTree::shortestEdgeAcross (std::uint32_t position,
   const auto beyond = [&limit] (double squared) {
     return squared > limit * limit * MARGIN;
   };
-  // Depth-first, nearer child first: at most one pending sibling per level.
-  std::array<std::uint32_t, 128> stack;
+  // Depth-first, nearer child first: at most one pending sibling per level. Each
+  // pending node keeps its squared distance to p, measured once.
+  std::array<std::pair<std::uint32_t, double>, 128> stack;
   std::size_t pending = 0;
-  stack[pending++] = 0;
+  stack[pending++] = {0, squaredDistanceToBox (p, nodes_[0])};
   while (pending > 0) {
-    const Node& node = nodes_[stack[--pending]];
+    const auto [index, squared_distance] = stack[--pending];
     limit = std::min (limit, bound.load (std::memory_order_relaxed));
-    if (node_component_[&node - nodes_.data()] == own ||
-        beyond (squaredDistanceToBox (p, node)))
+    if (node_component_[index] == own || beyond (squared_distance))
       continue;
+    const Node& node = nodes_[index];
     if (node.left != 0) {
-      const Node& first = nodes_[node.left];
-      const Node& second = nodes_[node.left + 1];
-      const bool first_nearer =
-          squaredDistanceToBox (p, first) <= squaredDistanceToBox (p, second);
-      stack[pending++] = first_nearer ? node.left + 1 : node.left;
-      stack[pending++] = first_nearer ? node.left : node.left + 1;
+      const double first = squaredDistanceToBox (p, nodes_[node.left]);
+      const double second = squaredDistanceToBox (p, nodes_[node.left + 1]);
+      if (first <= second) {
+        stack[pending++] = {node.left + 1, second};
+        stack[pending++] = {node.left, first};
+      }
+      else {
+        stack[pending++] = {node.left, first};
+        stack[pending++] = {node.left + 1, second};
+      }
       continue;
     }
     for (std::uint32_t j = node.begin; j < node.end; ++j) {
