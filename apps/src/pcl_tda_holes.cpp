@@ -198,8 +198,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   std::ostringstream found;
   found << holes.size() << " holes, radius " << estimation.getUsedRadius()
         << (options.radius > 0.0 ? " (given)" : " (from the spacing)") << ", "
-        << estimation.getComplex().numEdges() << " edges, "
-        << estimation.getComplex().numTriangles() << " triangles";
+        << estimation.getSearchCounts().edges << " edges, "
+        << estimation.getSearchCounts().open_classes << " open 1-classes, "
+        << estimation.getSearchCounts().persistent_classes << " alive at "
+        << estimation.getUsedPersistenceRadius() << ", "
+        << estimation.getSearchCounts().border_polygons << " border polygons";
   console.endStep (found.str());
   constexpr std::size_t MAX_LINES = 30;
   for (std::size_t k = 0; k < holes.size() && k < MAX_LINES; ++k)

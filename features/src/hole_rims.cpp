@@ -47,7 +47,6 @@ medianTilt (const std::vector<SimplexIndex>& rim,
 
 std::vector<HoleRim>
 holeRims (const std::vector<MinimalCycle>& cycles,
-          const FilteredComplex& complex,
           const std::vector<Point3d>& positions,
           const EdgeAdjacency& adjacency,
           double max_tilt_degrees,
@@ -84,19 +83,21 @@ holeRims (const std::vector<MinimalCycle>& cycles,
     if (hole.tilt_degrees > max_tilt_degrees)
       continue;
     hole.rim = rim;
-    for (std::size_t i = 0; i < rim.size(); ++i)
-      hole.perimeter +=
+    for (std::size_t i = 0; i < rim.size(); ++i) {
+      const double length =
           distance (positions[rim[i]], positions[rim[(i + 1) % rim.size()]]);
+      hole.perimeter += length;
+      hole.birth = std::max (hole.birth, length);
+    }
     hole.area = polygon.area();
     hole.clearance = cycle.clearance;
     hole.centroid = polygon.centroid().cast<float>();
-    hole.birth = complex.edges()[cycle.essential_edge].value;
     found.push_back ({&cycle, polygon, std::move (hole)});
   }
   // Several classes can go around the same empty region: keep its shortest rim.
   const auto byPerimeter = [] (const Found& a, const Found& b) {
-    return std::tie (a.hole.perimeter, a.cycle->essential_edge) <
-           std::tie (b.hole.perimeter, b.cycle->essential_edge);
+    return std::tie (a.hole.perimeter, a.cycle->class_edge) <
+           std::tie (b.hole.perimeter, b.cycle->class_edge);
   };
   std::sort (found.begin(), found.end(), byPerimeter);
   std::vector<Found> kept;
@@ -110,8 +111,8 @@ holeRims (const std::vector<MinimalCycle>& cycles,
       kept.push_back (std::move (candidate));
   }
   std::sort (kept.begin(), kept.end(), [] (const Found& a, const Found& b) {
-    return std::make_tuple (b.hole.rim.size(), a.cycle->essential_edge) <
-           std::make_tuple (a.hole.rim.size(), b.cycle->essential_edge);
+    return std::make_tuple (b.hole.rim.size(), a.cycle->class_edge) <
+           std::make_tuple (a.hole.rim.size(), b.cycle->class_edge);
   });
   std::vector<HoleRim> holes;
   holes.reserve (kept.size());

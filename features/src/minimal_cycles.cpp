@@ -203,13 +203,13 @@ public:
    * on a curved surface can be far from the hole's): a rim whose own polygon holds
    * no empty region wide enough is dropped. */
   std::vector<MinimalCycle>
-  rims (const std::vector<SimplexIndex>& cycle, SimplexIndex essential_edge)
+  rims (const std::vector<SimplexIndex>& cycle, SimplexIndex class_edge)
   {
     std::vector<MinimalCycle> result;
-    for (const MinimalCycle& first : windingRims (cycle, essential_edge)) {
+    for (const MinimalCycle& first : windingRims (cycle, class_edge)) {
       std::optional<MinimalCycle> again = foundAgain (first.vertices);
       if (again) {
-        again->essential_edge = essential_edge;
+        again->class_edge = class_edge;
         result.push_back (std::move (*again));
       }
     }
@@ -240,7 +240,7 @@ private:
 
   /** The shortest cycles around the empty regions inside the polygon of \a cycle. */
   std::vector<MinimalCycle>
-  windingRims (const std::vector<SimplexIndex>& cycle, SimplexIndex essential_edge)
+  windingRims (const std::vector<SimplexIndex>& cycle, SimplexIndex class_edge)
   {
     const ProjectedPolygon polygon (positions_, cycle);
     ++generation_;
@@ -267,7 +267,7 @@ private:
     keepCycleEdgesAndChords (polygon, region, region_points);
     for (const EmptyPoint& hole : holes) {
       MinimalCycle rim;
-      rim.essential_edge = essential_edge;
+      rim.class_edge = class_edge;
       rim.vertices = windingCycle (region_graph_, region, region_points, hole.position);
       rim.clearance = hole.clearance;
       const Eigen::Vector3d center = polygon.centroid() +
@@ -472,23 +472,49 @@ essentialEdges (const PersistenceResult& result)
   return essential;
 }
 
+std::vector<SimplexIndex>
+persistentClassEdges (const std::vector<FilteredEdge>& edges,
+                      const std::vector<std::uint8_t>& edge_positive,
+                      const std::vector<double>& edge_death,
+                      double radius,
+                      double persistence_radius)
+{
+  std::vector<SimplexIndex> persistent;
+  for (std::size_t e = 0; e < edges.size() && edges[e].value <= radius; ++e)
+    if (edge_positive[e] && edge_death[e] > persistence_radius)
+      persistent.push_back (static_cast<SimplexIndex> (e));
+  return persistent;
+}
+
+std::vector<InitialCycle>
+classCycles (const FilteredComplex& complex,
+             const std::vector<std::uint8_t>& edge_positive,
+             const std::vector<SimplexIndex>& class_edges)
+{
+  const auto& edges = complex.edges();
+  const RootedForest forest (
+      buildEdgeAdjacency (complex.numVertices(), edges, [&] (SimplexIndex e) {
+        return !edge_positive[e];
+      }));
+  std::vector<InitialCycle> cycles;
+  cycles.reserve (class_edges.size());
+  for (const SimplexIndex e : class_edges)
+    cycles.push_back ({forest.path (edges[e].source, edges[e].target), e});
+  return cycles;
+}
+
 std::vector<MinimalCycle>
 minimalCycles (const FilteredComplex& complex,
-               const PersistenceResult& result,
+               const std::vector<InitialCycle>& initial,
                const std::vector<Point3d>& positions,
                const EdgeAdjacency& adjacency,
                double min_clearance,
                unsigned int threads,
                const ProgressCallback& progress)
 {
-  const std::vector<SimplexIndex> essential = essentialEdges (result);
-  std::vector<std::vector<MinimalCycle>> per_class (essential.size());
+  std::vector<std::vector<MinimalCycle>> per_class (initial.size());
   const auto& edges = complex.edges();
-  const RootedForest forest (
-      buildEdgeAdjacency (complex.numVertices(), edges, [&] (SimplexIndex e) {
-        return !result.edge_positive[e];
-      }));
-  const auto count = static_cast<std::int64_t> (essential.size());
+  const auto count = static_cast<std::int64_t> (initial.size());
   // The searches read the edges' lengths along the adjacency lists, not at random.
   std::vector<double> lengths (adjacency.entries.size());
   for (std::size_t k = 0; k < lengths.size(); ++k)
@@ -501,11 +527,10 @@ minimalCycles (const FilteredComplex& complex,
         adjacency, lengths, positions, min_clearance / 4.0, min_clearance);
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < count; ++i) {
-      const SimplexIndex e = essential[i];
-      per_class[i] = finder.rims (forest.path (edges[e].source, edges[e].target), e);
+      per_class[i] = finder.rims (initial[i].vertices, initial[i].class_edge);
       const std::size_t searched = ++done;
       if (progress && omp_get_thread_num() == 0)
-        progress (searched, essential.size());
+        progress (searched, initial.size());
     }
   }
   std::vector<MinimalCycle> cycles;

@@ -159,17 +159,23 @@ computeCliqueH1Persistence (const FilteredComplex& skeleton,
   // An apparent pair's triangle has the edge's value: only the reduced pairs and the
   // essential classes have length.
   std::vector<std::uint8_t> paired (edges.size(), 0);
+  persistence.edge_death = largeVector<double> (edges.size(), 0.0);
+  for (SimplexIndex e = 0; e < edges.size(); ++e)
+    persistence.edge_death[e] = edges[e].value;
   for (const auto& [triangle, edge] : coboundaries.sortedReducedPairs()) {
     paired[edge] = 1;
     const double birth = edges[edge].value;
     const double death = edges[youngestEdge (triangle)].value;
+    persistence.edge_death[edge] = death;
     if (birth != death)
       persistence.diagram.push_back ({1, birth, death});
   }
   for (SimplexIndex e = 0; e < edges.size(); ++e)
-    if (h0.edge_positive[e] && !paired[e] && apparent.middle[e] == INVALID_SIMPLEX)
+    if (h0.edge_positive[e] && !paired[e] && apparent.middle[e] == INVALID_SIMPLEX) {
+      persistence.edge_death[e] = std::numeric_limits<double>::infinity();
       persistence.diagram.push_back (
           {1, edges[e].value, std::numeric_limits<double>::infinity()});
+    }
   return persistence;
 }
 

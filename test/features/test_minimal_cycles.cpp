@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <vector>
 
@@ -106,6 +107,15 @@ canonicalCycle (std::vector<SimplexIndex> cycle)
   return cycle;
 }
 
+/** The initial cycles of every essential class (thesis Alg 5.15, step 1). */
+std::vector<pcl::tda::InitialCycle>
+essentialCycles (const FilteredComplex& complex,
+                 const pcl::tda::PersistenceResult& result)
+{
+  return pcl::tda::classCycles (
+      complex, result.edge_positive, pcl::tda::essentialEdges (result));
+}
+
 TEST (MinimalCycles, ThesisExampleEveryEngine)
 {
   const FilteredComplex complex = thesisExample();
@@ -118,10 +128,14 @@ TEST (MinimalCycles, ThesisExampleEveryEngine)
     EXPECT_EQ (result.edge_positive, positive);
     // dg (edge 10) is the one unpaired positive edge.
     EXPECT_EQ (pcl::tda::essentialEdges (result), std::vector<SimplexIndex>{10});
-    const auto cycles = pcl::tda::minimalCycles (
-        complex, result, THESIS_POSITIONS, adjacencyOf (complex), 0.6, 1);
+    const auto cycles = pcl::tda::minimalCycles (complex,
+                                                 essentialCycles (complex, result),
+                                                 THESIS_POSITIONS,
+                                                 adjacencyOf (complex),
+                                                 0.6,
+                                                 1);
     ASSERT_EQ (cycles.size(), 1u);
-    EXPECT_EQ (cycles[0].essential_edge, 10u);
+    EXPECT_EQ (cycles[0].class_edge, 10u);
     // The initial cycle d-a-b-e-g shrinks by the chord bd to d-b-e-g.
     EXPECT_EQ (canonicalCycle (cycles[0].vertices), canonicalCycle ({D, B, E, G}));
     // The hole around (1, 1), whose empty disk has radius 1, up to the grid's cell
@@ -131,12 +145,35 @@ TEST (MinimalCycles, ThesisExampleEveryEngine)
   }
 }
 
+TEST (MinimalCycles, PersistentClassesAreBornByTheRadiusAndAliveAfter)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<FilteredEdge> edges;
+  for (SimplexIndex e = 0; e < 6; ++e)
+    edges.push_back ({e, e + 1, 0.1 * (e + 1)});
+  const std::vector<std::uint8_t> positive{0, 1, 1, 0, 1, 1};
+  const std::vector<double> death{0.1, 0.25, inf, 0.4, 0.9, inf};
+  // Edge 5 is born after the radius 0.5, edge 1 dies at 0.25, edges 0 and 3 are
+  // negative.
+  EXPECT_EQ (pcl::tda::persistentClassEdges (edges, positive, death, 0.5, 0.8),
+             (std::vector<SimplexIndex>{2, 4}));
+  EXPECT_EQ (pcl::tda::persistentClassEdges (edges, positive, death, 0.5, 0.2),
+             (std::vector<SimplexIndex>{1, 2, 4}));
+  EXPECT_EQ (pcl::tda::persistentClassEdges (edges, positive, death, 0.5, 0.95),
+             (std::vector<SimplexIndex>{2}));
+  EXPECT_EQ (pcl::tda::persistentClassEdges (edges, positive, death, 0.7, 0.95),
+             (std::vector<SimplexIndex>{2, 5}));
+}
+
 TEST (MinimalCycles, NoEmptyRegionWideEnoughGivesNoCycle)
 {
   const FilteredComplex complex = thesisExample();
   const auto result = pcl::tda::computePersistence (complex);
-  EXPECT_TRUE (pcl::tda::minimalCycles (
-                   complex, result, THESIS_POSITIONS, adjacencyOf (complex), 1.5)
+  EXPECT_TRUE (pcl::tda::minimalCycles (complex,
+                                        essentialCycles (complex, result),
+                                        THESIS_POSITIONS,
+                                        adjacencyOf (complex),
+                                        1.5)
                    .empty());
 }
 
@@ -202,12 +239,13 @@ TEST (MinimalCycles, AnnulusRimHugsTheHoleForAnyOrderAndThreads)
 {
   const Annulus annulus = makeAnnulus (0);
   const auto result = pcl::tda::computePersistence (annulus.complex);
-  const auto cycles = pcl::tda::minimalCycles (annulus.complex,
-                                               result,
-                                               annulus.positions,
-                                               adjacencyOf (annulus.complex),
-                                               0.5,
-                                               1);
+  const auto cycles =
+      pcl::tda::minimalCycles (annulus.complex,
+                               essentialCycles (annulus.complex, result),
+                               annulus.positions,
+                               adjacencyOf (annulus.complex),
+                               0.5,
+                               1);
   ASSERT_EQ (cycles.size(), 1u);
   // Every rim point is on the inner ring (radius 1 +- jitter) and the rim goes all
   // the way round: about 2 pi / 0.25 edges at least.
@@ -220,12 +258,13 @@ TEST (MinimalCycles, AnnulusRimHugsTheHoleForAnyOrderAndThreads)
     const Annulus shuffled = makeAnnulus (seed);
     const auto shuffled_result = pcl::tda::computePersistence (shuffled.complex);
     for (const unsigned threads : {1u, 2u, 4u}) {
-      const auto again = pcl::tda::minimalCycles (shuffled.complex,
-                                                  shuffled_result,
-                                                  shuffled.positions,
-                                                  adjacencyOf (shuffled.complex),
-                                                  0.5,
-                                                  threads);
+      const auto again =
+          pcl::tda::minimalCycles (shuffled.complex,
+                                   essentialCycles (shuffled.complex, shuffled_result),
+                                   shuffled.positions,
+                                   adjacencyOf (shuffled.complex),
+                                   0.5,
+                                   threads);
       ASSERT_EQ (again.size(), 1u);
       // fromLists keeps the vertex numbering of the input, so the rim is compared
       // by position.

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 #include <string>
 
@@ -50,13 +51,26 @@ expectSameAsListed (const Cloud::ConstPtr& cloud,
     if (interval.dimension == 1)
       expected.push_back (interval);
 
+  // The pairing edge by edge: the value of the killing triangle, infinity for an
+  // essential class, the edge's own value for a negative edge.
+  std::vector<double> expected_death (listed.numEdges());
+  for (std::size_t e = 0; e < expected_death.size(); ++e) {
+    const SimplexIndex killer = result.edge_killer[e];
+    expected_death[e] = !result.edge_positive[e] ? listed.edges()[e].value
+                        : killer == INVALID_SIMPLEX
+                            ? std::numeric_limits<double>::infinity()
+                            : listed.triangles()[killer].value;
+  }
+
   const FilteredComplex skeleton = buildComplex (cloud, radius, 1);
   EXPECT_EQ (skeleton.numTriangles(), 0u);
+  EXPECT_EQ (skeleton.numEdges(), listed.numEdges()) << what;
   const PersistenceResult h0 = computeH0Persistence (skeleton);
   for (const unsigned int threads : {1u, 2u}) {
     const CliqueH1Persistence clique =
         computeCliqueH1Persistence (skeleton, h0, threads);
     EXPECT_EQ (clique.num_triangles, listed.numTriangles()) << what;
+    EXPECT_EQ (clique.edge_death, expected_death) << what;
     EXPECT_EQ (clique.diagram.size(), expected.size()) << what;
     for (std::size_t k = 0; k < std::min (expected.size(), clique.diagram.size());
          ++k) {

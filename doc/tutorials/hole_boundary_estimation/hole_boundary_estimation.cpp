@@ -43,20 +43,19 @@ main (int argc, char** argv)
   if (flags.empty())
     return EXIT_FAILURE; // compute() printed why
   const std::vector<pcl::tda::HoleRim>& holes = hb.getHoles();
-  std::size_t flagged = 0, open_cycles = 0;
+  std::size_t flagged = 0;
   for (const pcl::Boundary& flag : flags)
     flagged += flag.boundary_point;
-  for (const pcl::tda::PersistenceInterval& bar : hb.getPersistenceDiagram())
-    open_cycles += bar.dimension == 1 && bar.isEssential();
+  const auto& searched = hb.getSearchCounts();
   std::cout << "pcl::tda::HoleBoundaryEstimation: " << holes.size() << " holes, "
             << flagged << " points in their rim bands (" << timer.toc()
-            << " ms); radius " << hb.getUsedRadius() << " m, "
-            << hb.getComplex().numEdges() << " edges, "
-            << hb.getComplex().numTriangles() << " triangles, " << open_cycles
-            << " 1-cycles open at the radius\n";
+            << " ms); radius " << hb.getUsedRadius() << " m, " << searched.edges
+            << " edges, " << searched.open_classes << " 1-cycles open at the radius, "
+            << searched.persistent_classes << " of them still open at "
+            << hb.getUsedPersistenceRadius() << " m\n";
   for (std::size_t k = 0; k < holes.size(); ++k)
     std::printf ("  hole %zu: rim of %zu points, %.1f cm long, area %.2f cm^2, "
-                 "born at %.2f mm\n",
+                 "closed at %.2f mm\n",
                  k + 1,
                  holes[k].rim.size(),
                  holes[k].perimeter * 1e2,

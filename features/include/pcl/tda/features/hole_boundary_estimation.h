@@ -63,6 +63,11 @@ public:
   /** \brief The default smallest hole radius, in units of the radius (see
    * setMinHoleRadius()). */
   static constexpr double DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS = 1.0;
+  /** \brief The persistence radius in units of the smallest hole radius: the
+   * classes of VR_r searched for holes are those still alive at this radius (or at
+   * r, when larger). A round hole of empty radius rho lives until about sqrt(3) rho,
+   * less on a noisy rim; most gaps of the sampling die before. */
+  static constexpr double PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS = 1.3;
   /** \brief The automatic rim band width in units of the surface spacing. */
   static constexpr double AUTO_BAND_PER_SPACING = 1.5;
   /** \brief The default largest tilt of a hole's rim against its surface. */
@@ -146,9 +151,9 @@ public:
     return band_width_;
   }
 
-  /** \brief Sets a callback told the progress of compute(): the complex's
-   * construction (the builder's thousandths), then the search of the essential
-   * 1-classes, as (done, 2000). */
+  /** \brief Sets a callback told the progress of compute(), as (done, 2000): the
+   * complex's construction (0 to 500), its H1 (500 to 1000), then the search of the
+   * initial cycles (1000 to 2000). */
   void
   setProgressCallback (const ProgressCallback& progress)
   {
@@ -172,8 +177,9 @@ public:
     return rim_band_labels_;
   }
 
-  /** \brief The persistence diagram (dimensions 0 and 1) of the complex of the last
-   * compute(); the holes are among its essential 1-classes. */
+  /** \brief The persistence diagram (dimensions 0 and 1) of the Vietoris-Rips
+   * filtration of the last compute() up to the persistence radius: the classes
+   * born by the radius and alive at the end are the ones searched for holes. */
   const PersistenceDiagram&
   getPersistenceDiagram () const
   {
@@ -187,6 +193,15 @@ public:
     return used_radius_;
   }
 
+  /** \brief The persistence radius used by the last compute(): the classes searched
+   * for holes are those of VR_r still alive there (see
+   * PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS). */
+  double
+  getUsedPersistenceRadius () const
+  {
+    return used_persistence_radius_;
+  }
+
   /** \brief The rim band width used by the last compute(). */
   double
   getUsedRimBandWidth () const
@@ -194,11 +209,32 @@ public:
     return used_band_width_;
   }
 
-  /** \brief The complex of the last compute(): its sizes, for reports. */
+  /** \brief The 1-skeleton of the Vietoris-Rips complex of the last compute(), up to
+   * the persistence radius; the rims are searched in its edges up to the radius. */
   const FilteredComplex&
   getComplex () const
   {
     return complex_;
+  }
+
+  /** \brief What the last compute() searched, for reports. */
+  struct SearchCounts {
+    /** \brief The edges of VR_r. */
+    std::size_t edges = 0;
+    /** \brief The 1-classes of VR_r: born by r, alive at r. */
+    std::size_t open_classes = 0;
+    /** \brief Those still alive at the persistence radius, whose initial cycles
+     * were searched. */
+    std::size_t persistent_classes = 0;
+    /** \brief The polygons around borders that were searched (borderPolygons()). */
+    std::size_t border_polygons = 0;
+  };
+
+  /** \brief What the last compute() searched. */
+  const SearchCounts&
+  getSearchCounts () const
+  {
+    return search_counts_;
   }
 
 protected:
@@ -233,6 +269,8 @@ private:
   std::vector<std::uint32_t> rim_band_labels_;
   PersistenceDiagram diagram_;
   double used_radius_ = 0.0;
+  double used_persistence_radius_ = 0.0;
+  SearchCounts search_counts_;
   double used_band_width_ = 0.0;
 };
 

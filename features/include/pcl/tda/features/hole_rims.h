@@ -32,9 +32,8 @@ struct HoleRim {
   /** \brief The median angle, in degrees, between the rim's plane and the surface
    * at its points: near 0 for a hole, near 90 for a loop around a handle or a tube. */
   double tilt_degrees = 0.0;
-  /** \brief The filtration value at which the rim closes (the length of its
-   * unpaired positive edge): the birth of its 1-class, which is still alive at the
-   * radius of the complex. */
+  /** \brief The filtration value at which the rim closes: the length of its
+   * longest edge. */
   double birth = 0.0;
 };
 
@@ -48,21 +47,19 @@ struct HoleRim {
  * about 90 degrees, and are not holes.
  *
  * A hole must also be wider than the gaps of the sampling: its empty disk has a
- * radius (MinimalCycle::clearance) of at least \a min_clearance. Classes around
+ * radius (MinimalCycle::clearance) of at least \a min_clearance. Cycles around
  * the same empty region (the centre of one's empty disk inside the other's rim)
  * give one hole, with the shortest of their rims.
  *
- * Holes come in decreasing order of rim length, ties by their unpaired edge.
+ * Holes come in decreasing order of rim length, ties by their class edge.
  * \param[in] cycles the minimal 1-cycles (minimalCycles())
- * \param[in] complex the complex they come from
  * \param[in] positions the position of every vertex
- * \param[in] adjacency the neighbours of every vertex (all edges of \a complex)
+ * \param[in] adjacency the neighbours of every vertex (the edges of the complex)
  * \param[in] max_tilt_degrees the largest median tilt of a hole
  * \param[in] max_cycle_length the largest number of rim points (0: no limit)
  * \param[in] min_clearance the smallest radius of a hole's empty disk */
 std::vector<HoleRim>
 holeRims (const std::vector<MinimalCycle>& cycles,
-          const FilteredComplex& complex,
           const std::vector<Point3d>& positions,
           const EdgeAdjacency& adjacency,
           double max_tilt_degrees,

@@ -6,6 +6,7 @@
 #include <pcl/tda/common/progress.h>
 
 #include <cstdint>
+#include <vector>
 
 namespace pcl {
 namespace tda {
@@ -16,6 +17,11 @@ struct CliqueH1Persistence {
    * PersistenceResult::diagram() on the complex with its triangles listed: finite
    * intervals by killing triangle, then essential ones by edge. */
   PersistenceDiagram diagram;
+  /** Per edge: the value at which the 1-class a positive edge creates dies (the
+   * value of its killing triangle; the edge's own value for a zero-length pair;
+   * infinity for an essential class), the pairing edge by edge; a negative edge,
+   * which creates no 1-class, gets its own value. */
+  std::vector<double> edge_death;
   /** The triangles of the clique complex (counted, never stored). */
   std::uint64_t num_triangles = 0;
 };

@@ -2,14 +2,17 @@
 
 #include <pcl/common/point_tests.h>
 #include <pcl/tda/common/edge_adjacency.h>
-#include <pcl/tda/common/persistence_engines.h>
+#include <pcl/tda/common/h0_persistence.h>
+#include <pcl/tda/features/border_polygons.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/features/minimal_cycles.h>
 #include <pcl/tda/features/setting_checks.h>
+#include <pcl/tda/search/clique_persistence.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 namespace pcl {
 namespace tda {
@@ -65,61 +68,104 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
     return false;
   }
 
+  const double min_clearance = min_hole_radius_ > 0.0
+                                   ? min_hole_radius_
+                                   : DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS * used_radius_;
+  used_persistence_radius_ =
+      std::max (used_radius_, PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS * min_clearance);
+
+  // Progress in quarters: the complex, its H1, then two for the search of classes.
+  const auto quarters = [this] (std::size_t first, std::size_t count) {
+    return [this, first, count] (std::size_t done, std::size_t total) {
+      progress_ ((first * total + count * done) * (PROGRESS_UNITS / 2) / total,
+                 2 * PROGRESS_UNITS);
+    };
+  };
   VietorisRipsBuilder<PointInT> builder;
   builder.setInputCloud (input_);
   builder.setIndices (indices_);
-  builder.setRadius (used_radius_);
-  builder.setMaxDimension (2);
+  builder.setRadius (used_persistence_radius_);
+  builder.setMaxDimension (1);
   builder.setNumberOfThreads (threads_);
   builder.setMemoryLimit (memory_limit_);
-  // The complex is the first half of the work, the search of the classes the other.
   if (progress_)
-    builder.setProgressCallback (
-        [this] (std::size_t done, std::size_t total) { progress_ (done, 2 * total); });
+    builder.setProgressCallback (quarters (0, 1));
   if (!builder.compute (complex_)) {
-    PCL_ERROR ("[pcl::tda::%s::compute] Cannot build the complex (see above).\n",
-               getClassName().c_str());
+    PCL_ERROR ("[pcl::tda::%s::compute] Cannot build the complex of radius %g (see "
+               "above).\n",
+               getClassName().c_str(),
+               used_persistence_radius_);
     return false;
   }
-  if (complex_.numTriangles() == 0) {
+  const PersistenceResult h0 = computeH0Persistence (complex_);
+  const CliqueH1Persistence h1 = computeCliqueH1Persistence (
+      complex_, h0, threads_, progress_ ? quarters (1, 1) : ProgressCallback{});
+  diagram_ = h0.diagram (complex_, 0);
+  diagram_.insert (diagram_.end(), h1.diagram.begin(), h1.diagram.end());
+
+  // The cycles are searched in VR_r: the edges up to r, a prefix of the list.
+  const auto& edges = complex_.edges();
+  const auto within_radius =
+      static_cast<SimplexIndex> (std::partition_point (edges.begin(),
+                                                       edges.end(),
+                                                       [this] (const FilteredEdge& e) {
+                                                         return e.value <= used_radius_;
+                                                       }) -
+                                 edges.begin());
+  // The first triangle kills a 1-class, so VR_r has one iff a class dies by r.
+  bool has_triangle = false;
+  for (SimplexIndex e = 0; e < within_radius && !has_triangle; ++e)
+    has_triangle = h0.edge_positive[e] && h1.edge_death[e] <= used_radius_;
+  if (!has_triangle) {
     PCL_ERROR ("[pcl::tda::%s::compute] The complex of radius %g has no triangle "
-               "(%zu points, %zu edges, point spacing %g): the radius is too small to "
+               "(%zu points, %u edges, point spacing %g): the radius is too small to "
                "make a surface. Use a radius of about %g times the spacing.\n",
                getClassName().c_str(),
                used_radius_,
                complex_.numVertices(),
-               complex_.numEdges(),
+               within_radius,
                spacing,
                AUTO_RADIUS_PER_SPACING);
     return false;
   }
 
-  const PersistenceResult result = computePersistence (complex_);
-  diagram_ = result.diagram (complex_);
   std::vector<Point3d> positions (complex_.numVertices());
   const pcl::Indices& point_indices = complex_.pointIndices();
   for (std::size_t v = 0; v < positions.size(); ++v) {
     const PointInT& p = (*input_)[point_indices[v]];
     positions[v] = {p.x, p.y, p.z};
   }
-  const EdgeAdjacency adjacency =
-      buildEdgeAdjacency (complex_.numVertices(), complex_.edges());
-  const double min_clearance = min_hole_radius_ > 0.0
-                                   ? min_hole_radius_
-                                   : DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS * used_radius_;
-  ProgressCallback search_progress;
-  if (progress_)
-    search_progress = [this] (std::size_t done, std::size_t total) {
-      progress_ (PROGRESS_UNITS + done * PROGRESS_UNITS / total, 2 * PROGRESS_UNITS);
-    };
+  const EdgeAdjacency adjacency = buildEdgeAdjacency (
+      complex_.numVertices(), edges, [within_radius] (SimplexIndex e) {
+        return e < within_radius;
+      });
+  // The classes that persist, then the borders, where a hole of a closed surface
+  // may have no class of its own.
+  std::vector<InitialCycle> initial =
+      classCycles (complex_,
+                   h0.edge_positive,
+                   persistentClassEdges (edges,
+                                         h0.edge_positive,
+                                         h1.edge_death,
+                                         used_radius_,
+                                         used_persistence_radius_));
+  search_counts_.edges = within_radius;
+  search_counts_.open_classes =
+      persistentClassEdges (
+          edges, h0.edge_positive, h1.edge_death, used_radius_, used_radius_)
+          .size();
+  search_counts_.persistent_classes = initial.size();
+  std::vector<InitialCycle> borders =
+      borderPolygons (positions, adjacency, used_radius_, min_clearance, threads_);
+  search_counts_.border_polygons = borders.size();
+  std::move (borders.begin(), borders.end(), std::back_inserter (initial));
   holes_ = holeRims (minimalCycles (complex_,
-                                    result,
+                                    initial,
                                     positions,
                                     adjacency,
                                     min_clearance,
                                     threads_,
-                                    search_progress),
-                     complex_,
+                                    progress_ ? quarters (2, 2) : ProgressCallback{}),
                      positions,
                      adjacency,
                      max_tilt_degrees_,
@@ -144,6 +190,7 @@ HoleBoundaryEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& outp
   diagram_.clear();
   rim_band_labels_.clear();
   complex_ = FilteredComplex();
+  search_counts_ = SearchCounts();
   if (!findHoles()) {
     holes_.clear();
     rim_band_labels_.clear();
