@@ -3,8 +3,10 @@
  * border), rims and flags against the labels, independence of order and threads,
  * and bad input. */
 #include <pcl/common/io.h>
+#include <pcl/tda/common/persistence_engines.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/generators/hole_surfaces.h>
+#include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
@@ -101,10 +103,11 @@ TEST (HoleBoundaryEstimation, OpenPatchesEveryHoleAndNothingElse)
 
 TEST (HoleBoundaryEstimation, TubesAndClosedSurfacesNoHandleReported)
 {
-  // On a closed surface with k holes, k - 1 of them are independent 1-classes; the
-  // waist and the open ends of a tube and the loops of a torus stand across the
-  // surface and must not be reported. (On the torus, holes whose classes also go
-  // around a handle are not found yet: only precision is checked there.)
+  // On a closed surface with k holes, k - 1 of them are independent 1-classes: the
+  // polygons around the borders find the last one of the sphere. The waist and the
+  // open ends of a tube and the loops of a torus stand across the surface and must
+  // not be reported. (The torus and the noise-free cylinder still miss a hole at
+  // times: at least one there, or all but one.)
   for (const HoleSurfaceKind kind :
        {HoleSurfaceKind::CYLINDER, HoleSurfaceKind::SPHERE, HoleSurfaceKind::TORUS})
     for (const std::uint64_t seed : {1u, 2u, 3u}) {
@@ -116,11 +119,63 @@ TEST (HoleBoundaryEstimation, TubesAndClosedSurfacesNoHandleReported)
       pcl::PointCloud<pcl::Boundary> flags;
       estimation.compute (flags);
       const HoleCounts counts = countHoles (estimation.getHoles(), surface);
-      if (kind != HoleSurfaceKind::TORUS) {
+      if (kind == HoleSurfaceKind::SPHERE) {
+        EXPECT_EQ (counts.matched, surface.holes.size());
+      }
+      else if (kind == HoleSurfaceKind::CYLINDER) {
         EXPECT_GE (counts.matched + 1, surface.holes.size());
+      }
+      else {
+        EXPECT_GE (counts.matched, 1u);
       }
       EXPECT_EQ (counts.unmatched, 0u);
     }
+}
+
+TEST (HoleBoundaryEstimation, SearchesTheClassesAliveAtThePersistenceRadius)
+{
+  // Oracle: the standard reduction of the complex with its triangles listed, up to
+  // the persistence radius: the classes born by r, and those still alive there.
+  for (const HoleSurfaceKind kind : {HoleSurfaceKind::PLANE, HoleSurfaceKind::TORUS}) {
+    const auto cloud = positionsOf (generate (kind, 7, 0.1f));
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    pcl::PointCloud<pcl::Boundary> flags;
+    estimation.compute (flags);
+    const double r = estimation.getUsedRadius();
+    const double persistence_radius = estimation.getUsedPersistenceRadius();
+    EXPECT_DOUBLE_EQ (persistence_radius,
+                      Estimation::PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS * r);
+
+    pcl::tda::VietorisRipsBuilder<pcl::PointXYZ> builder;
+    builder.setInputCloud (cloud);
+    builder.setRadius (persistence_radius);
+    pcl::tda::FilteredComplex complex;
+    ASSERT_TRUE (builder.compute (complex));
+    const pcl::tda::PersistenceResult result =
+        pcl::tda::computePersistence (complex, pcl::tda::PersistenceEngine::STANDARD);
+    std::size_t edges = 0, open = 0, persistent = 0;
+    for (std::size_t e = 0; e < complex.numEdges(); ++e) {
+      if (complex.edges()[e].value > r)
+        break;
+      ++edges;
+      if (!result.edge_positive[e])
+        continue;
+      const pcl::tda::SimplexIndex killer = result.edge_killer[e];
+      const double death = killer == pcl::tda::INVALID_SIMPLEX
+                               ? std::numeric_limits<double>::infinity()
+                               : complex.triangles()[killer].value;
+      open += death > r;
+      persistent += death > persistence_radius;
+    }
+    const auto& counts = estimation.getSearchCounts();
+    EXPECT_EQ (counts.edges, edges);
+    EXPECT_EQ (counts.open_classes, open);
+    EXPECT_EQ (counts.persistent_classes, persistent);
+    // Gaps of the sampling fill in before the persistence radius.
+    EXPECT_GT (open, 10 * persistent);
+    EXPECT_GE (persistent, 3u);
+  }
 }
 
 TEST (HoleBoundaryEstimation, FlagsTheRimBandOfTheLabels)

@@ -56,7 +56,12 @@ public:
     float eigenvalue = 0.0f;
     Eigen::Vector3f normal;
     pcl::eigen33 (covariance, eigenvalue, normal);
-    return normal.normalized();
+    normal.normalize();
+    // eigen33 gives no vector when the smallest eigenvalue is double (points on a
+    // line): any axis across the line is then a normal.
+    if (!normal.allFinite())
+      return principalAxes().col (2).cast<float>();
+    return normal;
   }
 
   /** \brief The unit axes of the spread of the added points, largest variance first
