@@ -22,12 +22,14 @@ namespace tda {
  * pcl::BoundaryEstimation in a pipeline.
  *
  * The finite points (among the indices) are the vertices of the Vietoris-Rips
- * complex VR_r (edges and triangles) at the radius r. Its persistence (H0 and H1)
- * gives the essential 1-classes: the 1-cycles that no triangle fills at r. Each class
- * gives a minimal 1-cycle (minimalCycles()), and a cycle that the surface around it
- * spans is a hole (holeRims(): the test that keeps loops around handles and tubes
- * out). A gap of the sampling smaller than about r is filled by triangles and is not
- * a class; a hole wider than about 2 r stays one.
+ * complex VR_r at the radius r. Its 1-classes still open at the persistence radius
+ * (PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS times the smallest hole radius) are the
+ * holes, handles and loops around tubes; the gaps of the sampling, most of the
+ * classes open at r, fill in before. Each class searched gives minimal 1-cycles
+ * (minimalCycles()), and so does a polygon around each border of the surface
+ * (borderPolygons()), for the holes that homology cannot tell apart; a cycle that
+ * the surface around it spans is a hole (holeRims(): the test that keeps loops
+ * around handles and tubes out).
  *
  * compute() gives one pcl::Boundary per index: boundary_point is 1 for the points of
  * the rim band: the rim's points and the points within the band width of a rim
@@ -35,10 +37,9 @@ namespace tda {
  * pcl::BoundaryEstimation flags along a border. getHoles() gives every hole's rim
  * in cycle order as input indices, with its perimeter, area, plane and birth.
  *
- * Homology sees a hole only where it is a cycle that bounds nothing: on a closed
- * surface (a sphere, a torus) with k holes there are k - 1 independent hole classes
- * besides the handles, so one hole of a closed surface is not found; a surface that
- * is open elsewhere (a patch, a scan of one side of an object) has all k.
+ * On a closed surface (a sphere, a torus) with k holes there are only k - 1
+ * independent hole classes besides the handles; the border polygons find the
+ * others where the border test sees their rim whole.
  *
  * The results depend neither on the input order nor on the number of threads.
  *
