@@ -235,17 +235,24 @@ rimPositions (const pcl::tda::MinimalCycle& cycle,
   return rim;
 }
 
+/** The minimal cycles of the annulus' essential classes, around empty disks of
+ * radius 0.5 at least. */
+std::vector<pcl::tda::MinimalCycle>
+annulusRims (const Annulus& annulus, unsigned threads)
+{
+  return pcl::tda::minimalCycles (
+      annulus.complex,
+      essentialCycles (annulus.complex, pcl::tda::computePersistence (annulus.complex)),
+      annulus.positions,
+      adjacencyOf (annulus.complex),
+      0.5,
+      threads);
+}
+
 TEST (MinimalCycles, AnnulusRimHugsTheHoleForAnyOrderAndThreads)
 {
   const Annulus annulus = makeAnnulus (0);
-  const auto result = pcl::tda::computePersistence (annulus.complex);
-  const auto cycles =
-      pcl::tda::minimalCycles (annulus.complex,
-                               essentialCycles (annulus.complex, result),
-                               annulus.positions,
-                               adjacencyOf (annulus.complex),
-                               0.5,
-                               1);
+  const auto cycles = annulusRims (annulus, 1);
   ASSERT_EQ (cycles.size(), 1u);
   // Every rim point is on the inner ring (radius 1 +- jitter) and the rim goes all
   // the way round: about 2 pi / 0.25 edges at least.
@@ -256,15 +263,8 @@ TEST (MinimalCycles, AnnulusRimHugsTheHoleForAnyOrderAndThreads)
   const auto expected = rimPositions (cycles[0], annulus.positions);
   for (const unsigned seed : {1u, 2u, 3u}) {
     const Annulus shuffled = makeAnnulus (seed);
-    const auto shuffled_result = pcl::tda::computePersistence (shuffled.complex);
     for (const unsigned threads : {1u, 2u, 4u}) {
-      const auto again =
-          pcl::tda::minimalCycles (shuffled.complex,
-                                   essentialCycles (shuffled.complex, shuffled_result),
-                                   shuffled.positions,
-                                   adjacencyOf (shuffled.complex),
-                                   0.5,
-                                   threads);
+      const auto again = annulusRims (shuffled, threads);
       ASSERT_EQ (again.size(), 1u);
       // fromLists keeps the vertex numbering of the input, so the rim is compared
       // by position.

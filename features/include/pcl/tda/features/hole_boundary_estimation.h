@@ -124,7 +124,9 @@ public:
    * disk inside its rim must be at least this. 0 (the default):
    * DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS times the radius of the complex. The gaps of
    * the sampling that the complex's triangles leave open are narrower (measured on
-   * generated surfaces at every noise level: none reached it). */
+   * generated surfaces at every noise level: none reached it). The filtration is
+   * built up to PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS times it (when larger than
+   * the radius), so a large value costs memory and time. */
   void
   setMinHoleRadius (double radius)
   {
