@@ -2,9 +2,13 @@
 #include <pcl/tda/features/border_polygons.h>
 #include <pcl/tda/search/radius_edges.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <utility>
 
 namespace pcl {
 namespace tda {
@@ -19,6 +23,11 @@ constexpr std::size_t MIN_POLYGON_BINS = 8;
 constexpr int POLYGON_MARGIN_EDGES = 2;
 /** How many edges apart border vertices of one component may be. */
 constexpr int BRIDGE_EDGES = 2;
+/** The smallest eigenvalue, per vertex, of the sum of the projections across the
+ * gap directions of a component whose lines are taken to meet: 0 when they are
+ * parallel; (1 - sin(a) / a) / 2 for directions spread evenly over an angle a: 0.18
+ * over a quarter turn, 0.5 over a half. */
+constexpr double MIN_SPREAD = 0.1;
 
 Eigen::Vector3d
 toEigen (const Point3d& p)
@@ -26,17 +35,18 @@ toEigen (const Point3d& p)
   return {p[0], p[1], p[2]};
 }
 
-/** True when the directions from \a v to its neighbours, in the plane fitted to them
- * and \a v, leave a gap wider than BORDER_GAP. */
-bool
-onBorder (SimplexIndex v,
-          const std::vector<Point3d>& positions,
-          const EdgeAdjacency& adjacency,
-          std::vector<double>& angles)
+/** When the directions from \a v to its neighbours, in the plane fitted to them and
+ * \a v, leave a gap wider than BORDER_GAP: the unit direction that halves the gap
+ * (towards the empty side); otherwise zero. */
+Eigen::Vector3d
+borderGap (SimplexIndex v,
+           const std::vector<Point3d>& positions,
+           const EdgeAdjacency& adjacency,
+           std::vector<double>& angles)
 {
   const EdgeAdjacency::Range neighbors = adjacency.neighbors (v);
   if (neighbors.end() - neighbors.begin() < 2)
-    return false;
+    return Eigen::Vector3d::Zero();
   PlaneFit plane (positions[v]);
   plane.add (positions[v]);
   for (const auto& entry : neighbors)
@@ -50,9 +60,15 @@ onBorder (SimplexIndex v,
   }
   std::sort (angles.begin(), angles.end());
   double widest = angles.front() + 2.0 * M_PI - angles.back();
+  double middle = angles.back() + widest / 2.0;
   for (std::size_t k = 1; k < angles.size(); ++k)
-    widest = std::max (widest, angles[k] - angles[k - 1]);
-  return widest > BORDER_GAP;
+    if (angles[k] - angles[k - 1] > widest) {
+      widest = angles[k] - angles[k - 1];
+      middle = angles[k - 1] + widest / 2.0;
+    }
+  if (widest <= BORDER_GAP)
+    return Eigen::Vector3d::Zero();
+  return std::cos (middle) * axes.col (0) + std::sin (middle) * axes.col (1);
 }
 
 /** The vertices within \a steps edges of \a component (itself included), using
@@ -82,28 +98,65 @@ neighborhood (const std::vector<SimplexIndex>& component,
   return reached;
 }
 
-/** The polygon around \a component: the farthest vertex of its neighbourhood in
- * each angle bin around the component's centroid, in its plane. */
-std::vector<SimplexIndex>
-polygonAround (const std::vector<SimplexIndex>& component,
-               const std::vector<Point3d>& positions,
-               const EdgeAdjacency& adjacency,
-               std::vector<std::uint8_t>& seen)
+/** The centre of the hole a border component goes around, where the lines from its
+ * vertices along their gap directions meet (least squares), with its median
+ * distance to them; none when the lines do not meet on the gap side within the
+ * component's extent (a straight border, scattered noise). A part of a rim does:
+ * every line points at the hole's centre. */
+std::optional<std::pair<Eigen::Vector3d, double>>
+holeCentre (const std::vector<SimplexIndex>& component,
+            const std::vector<Point3d>& positions,
+            const std::vector<Eigen::Vector3d>& gaps)
 {
-  PlaneFit plane (positions[component.front()]);
-  for (const SimplexIndex v : component)
-    plane.add (positions[v]);
-  const Eigen::Matrix3d axes = plane.principalAxes();
-  const Eigen::Vector3d centroid = plane.centroid();
-  const std::size_t bins = std::max (MIN_POLYGON_BINS, component.size());
+  Eigen::Matrix3d normal_matrix = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right_side = Eigen::Vector3d::Zero();
+  const Eigen::Vector3d origin = toEigen (positions[component.front()]);
+  Eigen::Vector3d low = Eigen::Vector3d::Zero(), high = low;
+  for (const SimplexIndex v : component) {
+    const Eigen::Vector3d p = toEigen (positions[v]) - origin;
+    const Eigen::Matrix3d across =
+        Eigen::Matrix3d::Identity() - gaps[v] * gaps[v].transpose();
+    normal_matrix += across;
+    right_side += across * p;
+    low = low.cwiseMin (p);
+    high = high.cwiseMax (p);
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (normal_matrix);
+  // The lines' directions must spread: a quarter turn at least on a round rim.
+  if (!(solver.eigenvalues()[0] >= MIN_SPREAD * static_cast<double> (component.size())))
+    return std::nullopt;
+  const Eigen::Vector3d centre = normal_matrix.ldlt().solve (right_side);
+  std::vector<double> distances;
+  double ahead = 0.0;
+  for (const SimplexIndex v : component) {
+    const Eigen::Vector3d to_centre = centre - (toEigen (positions[v]) - origin);
+    distances.push_back (to_centre.norm());
+    ahead += gaps[v].dot (to_centre);
+  }
+  const auto middle =
+      distances.begin() + static_cast<std::ptrdiff_t> (distances.size() / 2);
+  std::nth_element (distances.begin(), middle, distances.end());
+  if (!(ahead > 0.0) || !(*middle <= (high - low).norm()))
+    return std::nullopt;
+  return std::make_pair (centre + origin, *middle);
+}
+
+/** The farthest of \a vertices from \a centre in each of \a bins angle bins around
+ * it, in the plane of \a axes (columns 0 and 1), in angle order. */
+std::vector<SimplexIndex>
+starPolygon (const std::vector<SimplexIndex>& vertices,
+             const std::vector<Point3d>& positions,
+             const Eigen::Vector3d& centre,
+             const Eigen::Matrix3d& axes,
+             std::size_t bins)
+{
   struct Farthest {
     SimplexIndex vertex = INVALID_SIMPLEX;
     double squared_distance = -1.0;
   };
   std::vector<Farthest> farthest (bins);
-  for (const SimplexIndex v :
-       neighborhood (component, adjacency, seen, POLYGON_MARGIN_EDGES)) {
-    const Eigen::Vector3d d = toEigen (positions[v]) - centroid;
+  for (const SimplexIndex v : vertices) {
+    const Eigen::Vector3d d = toEigen (positions[v]) - centre;
     const double x = d.dot (axes.col (0)), y = d.dot (axes.col (1));
     const double angle = std::atan2 (y, x) + M_PI; // in [0, 2 pi]
     const auto bin = std::min (
@@ -122,6 +175,65 @@ polygonAround (const std::vector<SimplexIndex>& component,
   return polygon;
 }
 
+/** The vertices reached from \a component through vertices within \a reach of
+ * \a centre, using \a seen (all 0 on entry and on return) as scratch. */
+std::vector<SimplexIndex>
+reachedWithin (const std::vector<SimplexIndex>& component,
+               const std::vector<Point3d>& positions,
+               const EdgeAdjacency& adjacency,
+               const Eigen::Vector3d& centre,
+               double reach,
+               std::vector<std::uint8_t>& seen)
+{
+  std::vector<SimplexIndex> reached = component;
+  for (const SimplexIndex v : component)
+    seen[v] = 1;
+  for (std::size_t head = 0; head < reached.size(); ++head)
+    for (const auto& entry : adjacency.neighbors (reached[head]))
+      if (!seen[entry.neighbor] &&
+          (toEigen (positions[entry.neighbor]) - centre).norm() <= reach) {
+        seen[entry.neighbor] = 1;
+        reached.push_back (entry.neighbor);
+      }
+  for (const SimplexIndex v : reached)
+    seen[v] = 0;
+  return reached;
+}
+
+/** The polygon around \a component: around the centre of its hole when its gap
+ * directions meet (holeCentre()), the vertices reached within the hole's radius
+ * and POLYGON_MARGIN_EDGES edges of it; otherwise around its centroid, the vertices
+ * within POLYGON_MARGIN_EDGES edges of it. */
+std::vector<SimplexIndex>
+polygonAround (const std::vector<SimplexIndex>& component,
+               const std::vector<Point3d>& positions,
+               const std::vector<Eigen::Vector3d>& gaps,
+               const EdgeAdjacency& adjacency,
+               double radius,
+               std::vector<std::uint8_t>& seen)
+{
+  const auto hole = holeCentre (component, positions, gaps);
+  const std::vector<SimplexIndex> vertices =
+      hole ? reachedWithin (component,
+                            positions,
+                            adjacency,
+                            hole->first,
+                            hole->second + POLYGON_MARGIN_EDGES * radius,
+                            seen)
+           : neighborhood (component, adjacency, seen, POLYGON_MARGIN_EDGES);
+  PlaneFit plane (positions[vertices.front()]);
+  for (const SimplexIndex v : hole ? vertices : component)
+    plane.add (positions[v]);
+  const Eigen::Vector3d centre = hole ? hole->first : plane.centroid();
+  const std::size_t bins =
+      hole
+          ? std::max (MIN_POLYGON_BINS,
+                      static_cast<std::size_t> (std::ceil (
+                          2.0 * M_PI * (hole->second / radius + POLYGON_MARGIN_EDGES))))
+          : std::max (MIN_POLYGON_BINS, component.size());
+  return starPolygon (vertices, positions, centre, plane.principalAxes(), bins);
+}
+
 } // namespace
 
 std::vector<InitialCycle>
@@ -132,15 +244,17 @@ borderPolygons (const std::vector<Point3d>& positions,
                 unsigned int threads)
 {
   const auto n = static_cast<std::int64_t> (positions.size());
-  std::vector<std::uint8_t> border (positions.size(), 0);
+  std::vector<Eigen::Vector3d> gaps (positions.size());
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
     std::vector<double> angles;
 #pragma omp for schedule(dynamic, 1024)
     for (std::int64_t v = 0; v < n; ++v)
-      border[v] =
-          onBorder (static_cast<SimplexIndex> (v), positions, adjacency, angles);
+      gaps[v] = borderGap (static_cast<SimplexIndex> (v), positions, adjacency, angles);
   }
+  std::vector<std::uint8_t> border (positions.size(), 0);
+  for (std::size_t v = 0; v < positions.size(); ++v)
+    border[v] = !gaps[v].isZero();
   const auto min_size =
       static_cast<std::size_t> (std::ceil (2.0 * M_PI * min_clearance / radius));
   std::vector<InitialCycle> polygons;
@@ -164,7 +278,7 @@ borderPolygons (const std::vector<Point3d>& positions,
     if (component.size() < min_size)
       continue;
     std::vector<SimplexIndex> polygon =
-        polygonAround (component, positions, adjacency, seen);
+        polygonAround (component, positions, gaps, adjacency, radius, seen);
     if (polygon.size() >= 3)
       polygons.push_back ({std::move (polygon), INVALID_SIMPLEX});
   }

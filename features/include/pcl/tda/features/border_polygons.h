@@ -23,16 +23,20 @@ namespace tda {
  *   automatic r = 1.6 h. A smaller angle, such as pcl::BoundaryEstimation's 90
  *   degrees, flags half the points of a jittered sampling at r = 1.6 h.
  * - The border vertices, joined through paths of up to two edges (so that rim
- *   points with narrower gaps do not cut their rim), form components. One with fewer
- *   than
- *   2 pi \a min_clearance / \a radius vertices is too short to go around a hole
- *   whose empty disk has radius \a min_clearance (a sampling irregularity): it is
- *   skipped.
- * - Around each other component, in order of its first vertex, the polygon: the
- *   vertices within two edges of it, projected onto the component's least-squares
- *   plane and binned by their angle around its centroid (one bin per component
- *   vertex, at least 8); the farthest vertex of each bin, in angle order. It holds
- *   the component with a margin of about two edges, so the rim is inside it.
+ *   points with narrower gaps do not cut their rim), form components. One with
+ *   fewer than 2 pi \a min_clearance / \a radius vertices is too short to go around
+ *   a hole whose empty disk has radius \a min_clearance (a sampling irregularity):
+ *   it is skipped.
+ * - Around each other component, in order of its first vertex, a polygon. The
+ *   line from each border vertex along the middle of its gap points into the empty
+ *   side; where the lines of a component meet (least squares), on the gap side and
+ *   within the component's extent, is the centre of its hole, even when the
+ *   component is only a part of the rim. The polygon is then the farthest vertex, in
+ *   each angle bin around that centre, of the vertices reached from the component
+ *   within the hole's radius (the median distance of the component) plus two edges
+ *   of the centre: it goes around the whole hole. When the lines do not meet (a
+ *   straight or outer border, scattered noise), it is built the same way around the
+ *   component's centroid from the vertices within two edges of it.
  *
  * An outer border or the open end of a tube gives a polygon too; the search finds
  * no empty region inside the former, and holeRims() drops the latter's rim, which
