@@ -214,6 +214,20 @@ section_holes() {
   }
   # Its own "##" title and the blank line after it, and the JSON line, left out.
   printf '%s\n' "$holes" | sed '1,2d;$d'
+  echo
+  echo "### Real scans with round holes cut in (data not made by our generator)"
+  echo
+  echo "\`pcl_tda_bench_holes_cut -seeds 3 -holes 3\`: holes of radius R = 4 h and 8 h (h: the"
+  echo "scan's surface spacing) cut around random points well inside each scan (their"
+  echo "2R-neighbourhood holds at least 90 % of the median number of points), at least 4R"
+  echo "apart; ours at its defaults. A cut hole is found when a rim's centroid lies within"
+  echo "R / 2 of its centre. Rims reported: all rims, the scans' own holes and gaps included"
+  echo "(not scored). Time: median over the seeds."
+  echo
+  "$bin/pcl_tda_bench_holes_cut" "$data" -seeds 3 -holes 3 || {
+    echo "update_benchmarks: failed: pcl_tda_bench_holes_cut" >&2
+    exit 1
+  }
 }
 
 section_descriptors() {
