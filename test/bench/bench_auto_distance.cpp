@@ -23,12 +23,12 @@
 #include <pcl/search/kdtree.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/tool_options.h>
-#include <pcl/tda/common/error_message.h>
 #include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 #include <pcl/point_types.h>
 
+#include "bench_command_line.h"
 #include "bench_statistics.h"
 #include "segmentation/cluster_oracles.h"
 #include "segmentation/real_object_scenes.h"
@@ -448,20 +448,10 @@ evaluateRealScans (const Options& options, std::ostringstream& json)
 int
 main (int argc, char** argv)
 {
-  if (pcl::tda::helpRequested (argc, argv)) {
-    printUsage (stdout);
-    return 0;
-  }
   Options options;
-  try {
-    parseOptions (argc, argv, options);
-  }
-  catch (const pcl::PCLException& error) {
-    std::fprintf (stderr, "%s\n", pcl::tda::errorMessage (error).c_str());
-    printUsage (stderr);
-    return 1;
-  }
-  pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
+  if (const auto stop = pcl::tda::bench::parseCommandLine (
+          argc, argv, options, parseOptions, printUsage))
+    return *stop;
 
   std::vector<Generator> generators = {
       {"tabletop (ours; the rule was tuned on it)",

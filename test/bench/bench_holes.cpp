@@ -26,6 +26,7 @@
 #include <pcl/tda/generators/random_sampling.h>
 #include <pcl/point_types.h>
 
+#include "bench_command_line.h"
 #include "bench_statistics.h"
 #include <omp.h>
 
@@ -552,19 +553,9 @@ int
 main (int argc, char** argv)
 {
   Options options;
-  if (pcl::tda::helpRequested (argc, argv)) {
-    printUsage (stdout);
-    return 0;
-  }
-  try {
-    parseOptions (argc, argv, options);
-  }
-  catch (const pcl::PCLException& error) {
-    std::fprintf (stderr, "%s\n", pcl::tda::errorMessage (error).c_str());
-    printUsage (stderr);
-    return 1;
-  }
-  pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
+  if (const auto stop = pcl::tda::bench::parseCommandLine (
+          argc, argv, options, parseOptions, printUsage))
+    return *stop;
 
   std::vector<pcl::tda::HoleSurfaceKind> kinds = {
       pcl::tda::HoleSurfaceKind::PLANE,

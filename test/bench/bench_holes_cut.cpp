@@ -15,11 +15,11 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/tda/apps/tool_options.h>
-#include <pcl/tda/common/error_message.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/search/point_spacing.h>
 #include <pcl/point_types.h>
 
+#include "bench_command_line.h"
 #include "bench_statistics.h"
 
 #include <algorithm>
@@ -156,19 +156,9 @@ int
 main (int argc, char** argv)
 {
   Options options;
-  if (pcl::tda::helpRequested (argc, argv)) {
-    printUsage (stdout);
-    return 0;
-  }
-  try {
-    parseOptions (argc, argv, options);
-  }
-  catch (const pcl::PCLException& error) {
-    std::fprintf (stderr, "%s\n", pcl::tda::errorMessage (error).c_str());
-    printUsage (stderr);
-    return 1;
-  }
-  pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
+  if (const auto stop = pcl::tda::bench::parseCommandLine (
+          argc, argv, options, parseOptions, printUsage))
+    return *stop;
   std::printf ("| cloud | points | h | hole radius | holes cut | found | recall | rims "
                "reported | time (s) |\n|---|---|---|---|---|---|---|---|---|\n");
   std::size_t all_cut = 0, all_found = 0;

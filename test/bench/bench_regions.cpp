@@ -19,11 +19,11 @@
 #include <pcl/segmentation/region_growing_rgb.h>
 #include <pcl/tda/apps/region_settings.h>
 #include <pcl/tda/apps/tool_options.h>
-#include <pcl/tda/common/error_message.h>
 #include <pcl/tda/generators/depth_camera_scenes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/point_types.h>
 
+#include "bench_command_line.h"
 #include "bench_statistics.h"
 #include "segmentation/segmentation_metrics.h"
 
@@ -258,19 +258,9 @@ int
 main (int argc, char** argv)
 {
   Options options;
-  if (pcl::tda::helpRequested (argc, argv)) {
-    printUsage (stdout);
-    return 0;
-  }
-  try {
-    parseOptions (argc, argv, options);
-  }
-  catch (const pcl::PCLException& error) {
-    std::fprintf (stderr, "%s\n", pcl::tda::errorMessage (error).c_str());
-    printUsage (stderr);
-    return 1;
-  }
-  pcl::console::setVerbosityLevel (pcl::console::L_ERROR);
+  if (const auto stop = pcl::tda::bench::parseCommandLine (
+          argc, argv, options, parseOptions, printUsage))
+    return *stop;
 
   // The sweep of pcl::RegionGrowingRGB: distance (its neighbour radius, in
   // metres), point and region colour thresholds (RGB distances); min size 20.
