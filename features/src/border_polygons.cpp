@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -71,23 +72,26 @@ borderGap (SimplexIndex v,
   return std::cos (middle) * axes.col (0) + std::sin (middle) * axes.col (1);
 }
 
-/** The vertices within \a steps edges of \a component (itself included), using
+/** The vertices reached from \a start (itself included, in the order found) through
+ * paths of at most \a max_steps edges whose vertices \a admit accepts, using
  * \a seen (all 0 on entry and on return) as scratch. */
+template <typename Admit>
 std::vector<SimplexIndex>
-neighborhood (const std::vector<SimplexIndex>& component,
-              const EdgeAdjacency& adjacency,
-              std::vector<std::uint8_t>& seen,
-              int steps)
+reachFrom (const std::vector<SimplexIndex>& start,
+           const EdgeAdjacency& adjacency,
+           std::vector<std::uint8_t>& seen,
+           int max_steps,
+           Admit admit)
 {
-  std::vector<SimplexIndex> reached = component;
-  for (const SimplexIndex v : component)
+  std::vector<SimplexIndex> reached = start;
+  for (const SimplexIndex v : start)
     seen[v] = 1;
   std::size_t ring_begin = 0;
-  for (int step = 0; step < steps; ++step) {
+  for (int step = 0; step < max_steps && ring_begin < reached.size(); ++step) {
     const std::size_t ring_end = reached.size();
     for (std::size_t k = ring_begin; k < ring_end; ++k)
       for (const auto& entry : adjacency.neighbors (reached[k]))
-        if (!seen[entry.neighbor]) {
+        if (!seen[entry.neighbor] && admit (entry.neighbor)) {
           seen[entry.neighbor] = 1;
           reached.push_back (entry.neighbor);
         }
@@ -96,6 +100,13 @@ neighborhood (const std::vector<SimplexIndex>& component,
   for (const SimplexIndex v : reached)
     seen[v] = 0;
   return reached;
+}
+
+/** Admits every vertex (reachFrom()). */
+bool
+anyVertex (SimplexIndex)
+{
+  return true;
 }
 
 /** The centre of the hole a border component goes around, where the lines from its
@@ -175,31 +186,6 @@ starPolygon (const std::vector<SimplexIndex>& vertices,
   return polygon;
 }
 
-/** The vertices reached from \a component through vertices within \a reach of
- * \a centre, using \a seen (all 0 on entry and on return) as scratch. */
-std::vector<SimplexIndex>
-reachedWithin (const std::vector<SimplexIndex>& component,
-               const std::vector<Point3d>& positions,
-               const EdgeAdjacency& adjacency,
-               const Eigen::Vector3d& centre,
-               double reach,
-               std::vector<std::uint8_t>& seen)
-{
-  std::vector<SimplexIndex> reached = component;
-  for (const SimplexIndex v : component)
-    seen[v] = 1;
-  for (std::size_t head = 0; head < reached.size(); ++head)
-    for (const auto& entry : adjacency.neighbors (reached[head]))
-      if (!seen[entry.neighbor] &&
-          (toEigen (positions[entry.neighbor]) - centre).norm() <= reach) {
-        seen[entry.neighbor] = 1;
-        reached.push_back (entry.neighbor);
-      }
-  for (const SimplexIndex v : reached)
-    seen[v] = 0;
-  return reached;
-}
-
 /** The polygon around \a component: around the centre of its hole when its gap
  * directions meet (holeCentre()), the vertices reached within the hole's radius
  * and POLYGON_MARGIN_EDGES edges of it; otherwise around its centroid, the vertices
@@ -213,14 +199,17 @@ polygonAround (const std::vector<SimplexIndex>& component,
                std::vector<std::uint8_t>& seen)
 {
   const auto hole = holeCentre (component, positions, gaps);
+  const auto within_reach = [&] (SimplexIndex v) {
+    return (toEigen (positions[v]) - hole->first).norm() <=
+           hole->second + POLYGON_MARGIN_EDGES * radius;
+  };
   const std::vector<SimplexIndex> vertices =
-      hole ? reachedWithin (component,
-                            positions,
-                            adjacency,
-                            hole->first,
-                            hole->second + POLYGON_MARGIN_EDGES * radius,
-                            seen)
-           : neighborhood (component, adjacency, seen, POLYGON_MARGIN_EDGES);
+      hole ? reachFrom (component,
+                        adjacency,
+                        seen,
+                        std::numeric_limits<int>::max(),
+                        within_reach)
+           : reachFrom (component, adjacency, seen, POLYGON_MARGIN_EDGES, anyVertex);
   PlaneFit plane (positions[vertices.front()]);
   for (const SimplexIndex v : hole ? vertices : component)
     plane.add (positions[v]);
@@ -270,7 +259,7 @@ borderPolygons (const std::vector<Point3d>& positions,
     component.assign (1, root);
     for (std::size_t head = 0; head < component.size(); ++head)
       for (const SimplexIndex v :
-           neighborhood ({component[head]}, adjacency, seen, BRIDGE_EDGES))
+           reachFrom ({component[head]}, adjacency, seen, BRIDGE_EDGES, anyVertex))
         if (border[v]) {
           border[v] = 0;
           component.push_back (v);
