@@ -219,10 +219,14 @@ section_holes() {
   echo
   echo "\`pcl_tda_bench_holes_cut -seeds 3 -holes 3\`: holes of radius R = 4 h and 8 h (h: the"
   echo "scan's surface spacing) cut around random points well inside each scan (their"
-  echo "2R-neighbourhood holds at least 90 % of the median number of points), at least 4R"
-  echo "apart; ours at its defaults. A cut hole is found when a rim's centroid lies within"
-  echo "R / 2 of its centre. Rims reported: all rims, the scans' own holes and gaps included"
-  echo "(not scored). Time: median over the seeds."
+  echo "2R-neighbourhood holds at least 90 % of the median number of points, and the points"
+  echo "at R to 2R leave no angular gap around the centre wider than 45 degrees: a hole, not"
+  echo "a notch at a border), at least 4R apart; ours at its defaults. Centred: a rim's"
+  echo "centroid lies within R / 2 of the hole's centre (the criterion of the generated"
+  echo "holes above). Around: a rim passes within 1.5 R of the centre and holds it inside,"
+  echo "in the rim's plane (the cut hole joined a larger empty region of the scan). Rims"
+  echo "reported: all rims, the scans' own holes and gaps included (not scored). Time:"
+  echo "median over the seeds."
   echo
   "$bin/pcl_tda_bench_holes_cut" "$data" -seeds 3 -holes 3 || {
     echo "update_benchmarks: failed: pcl_tda_bench_holes_cut" >&2

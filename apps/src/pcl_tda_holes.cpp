@@ -34,6 +34,7 @@ struct Options {
   std::string input, output, filled, fill_mode = "surface", csv, barcode_svg,
                                      picture_png;
   double radius = 0.0;
+  double min_hole_radius = 0.0;
   long max_cycle = 0;
   double memory_mib = 0.0;
 };
@@ -51,6 +52,11 @@ printHelp (const char* program)
               "the %zu-th nearest point)\n",
               Estimation::AUTO_RADIUS_PER_SPACING,
               pcl::tda::SURFACE_SPACING_NEIGHBORS);
+  print_info ("    -min-hole H = smallest hole radius: the largest empty disk inside "
+              "a rim must have\n                  radius H or more (default: %g "
+              "times the radius); narrower\n                  gaps are taken for "
+              "gaps of the sampling\n",
+              Estimation::DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS);
   print_info ("    -max-cycle N = report only rims of at most N points (default: no "
               "limit)\n");
   print_info ("    -fill F.pcd = also write the cloud with its holes filled: the "
@@ -80,6 +86,8 @@ parseOptions (int argc, char** argv, Options& options)
   pcl::tda::ToolCommandLine command_line;
   command_line.addNumber (
       "-radius", options.radius, pcl::tda::NumberRange::above (0.0, 1e9));
+  command_line.addNumber (
+      "-min-hole", options.min_hole_radius, pcl::tda::NumberRange::above (0.0, 1e9));
   command_line.addInteger (
       "-max-cycle", options.max_cycle, 3, std::numeric_limits<int>::max());
   command_line.addText ("-fill", options.filled);
@@ -176,6 +184,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   Estimation estimation;
   estimation.setInputCloud (cloud);
   estimation.setRadius (options.radius);
+  estimation.setMinHoleRadius (options.min_hole_radius);
   estimation.setMaxCycleLength (static_cast<std::size_t> (options.max_cycle));
   if (options.memory_mib > 0.0)
     estimation.setMemoryLimit (

@@ -267,6 +267,8 @@ TEST_F (BadInputMatrix, BadOptions)
       {holes + "-radius 0", "Option -radius needs a number > 0 and <= 1e+09, not '0'."},
       {holes + "-radius nan",
        "Option -radius needs a number > 0 and <= 1e+09, not 'nan'."},
+      {holes + "-min-hole -1",
+       "Option -min-hole needs a number > 0 and <= 1e+09, not '-1'."},
       {holes + "-max-cycle 2",
        "Option -max-cycle needs an integer from 3 to 2147483647, not '2'."},
       {holes + "-fill f.pcd -fill-mode cube",

@@ -14,6 +14,7 @@
 #include "test_data.h"
 #include "tool_runner.h"
 
+#include <algorithm>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -121,6 +122,27 @@ TEST (HolesTool, LabelsTheRimBandsOfEveryHole)
   EXPECT_GT (lines (svg).size(), 3u);
   EXPECT_TRUE (isPNGFile (png));
   EXPECT_TRUE (isPNGFile (temporaryPath ("b.png"))); // the barcode, beside its SVG
+}
+
+TEST (HolesTool, SmallestHoleRadius)
+{
+  // The generated holes have radii 3, 5 and 8 spacings: with -min-hole between the
+  // two largest, only the largest is a hole.
+  const pcl::tda::HoleSurface surface = plane (12);
+  std::vector<float> radii;
+  for (const auto& hole : surface.holes)
+    radii.push_back (hole.radius);
+  std::sort (radii.begin(), radii.end());
+  ASSERT_EQ (radii.size(), 3u);
+  const std::string in = temporaryPath ("min_in.pcd"), out = temporaryPath ("min.pcd");
+  pcl::io::savePCDFileBinary (in, *surface.cloud);
+  const RunResult all = runTool (in + " " + out);
+  ASSERT_EQ (all.exit_code, 0) << all.output;
+  EXPECT_NE (all.output.find (": 3 holes"), std::string::npos) << all.output;
+  const RunResult largest = runTool (in + " " + out + " -min-hole " +
+                                     std::to_string ((radii[1] + radii[2]) / 2));
+  ASSERT_EQ (largest.exit_code, 0) << largest.output;
+  EXPECT_NE (largest.output.find (": 1 holes"), std::string::npos) << largest.output;
 }
 
 TEST (HolesTool, CentroidFillAndShuffledInput)

@@ -176,6 +176,34 @@ TEST (HoleBoundaryEstimation, SearchesTheClassesAliveAtThePersistenceRadius)
   }
 }
 
+TEST (HoleBoundaryEstimation,
+      PersistenceRadiusFollowsTheSmallestHoleRadiusUpToTheRadius)
+{
+  // Closed form: 1.3 times the smallest hole radius, at most 1.3 r, at least r.
+  const auto cloud = positionsOf (generate (HoleSurfaceKind::PLANE, 3, 0.0f));
+  Estimation estimation;
+  estimation.setInputCloud (cloud);
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  const double r = estimation.getUsedRadius();
+  const double factor = Estimation::PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS;
+  for (const double min_hole_radius_per_radius : {0.5, 0.9, 1.0, 1.25, 3.0}) {
+    estimation.setRadius (r);
+    estimation.setMinHoleRadius (min_hole_radius_per_radius * r);
+    estimation.compute (flags);
+    EXPECT_DOUBLE_EQ (
+        estimation.getUsedPersistenceRadius(),
+        std::max (r, factor * std::min (min_hole_radius_per_radius, 1.0) * r))
+        << "smallest hole radius " << min_hole_radius_per_radius << " r";
+    // The generated holes (radius 3 h and more) are wider than 1.25 r = 2 h, and no
+    // gap of the sampling is as wide as r.
+    if (min_hole_radius_per_radius >= 1.0 && min_hole_radius_per_radius <= 1.25) {
+      EXPECT_EQ (estimation.getHoles().size(), 3u)
+          << "smallest hole radius " << min_hole_radius_per_radius << " r";
+    }
+  }
+}
+
 TEST (HoleBoundaryEstimation, FlagsTheRimBandOfTheLabels)
 {
   for (const std::uint64_t seed : {4u, 5u}) {

@@ -71,8 +71,9 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
   const double min_clearance = min_hole_radius_ > 0.0
                                    ? min_hole_radius_
                                    : DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS * used_radius_;
-  used_persistence_radius_ =
-      std::max (used_radius_, PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS * min_clearance);
+  used_persistence_radius_ = std::max (used_radius_,
+                                       PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS *
+                                           std::min (min_clearance, used_radius_));
 
   // Progress in quarters: the complex, its H1, then two for the search of classes.
   const auto quarters = [this] (std::size_t first, std::size_t count) {
