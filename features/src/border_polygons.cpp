@@ -1,5 +1,6 @@
 #include <pcl/tda/common/plane_fit.h>
 #include <pcl/tda/features/border_polygons.h>
+#include <pcl/tda/features/star_polygon.h>
 #include <pcl/tda/search/radius_edges.h>
 
 #include <Eigen/Eigenvalues>
@@ -18,10 +19,6 @@ namespace {
 
 /** The smallest gap between the directions to a border vertex's neighbours. */
 constexpr double BORDER_GAP = 0.75 * M_PI;
-/** The fewest angle bins of a polygon. */
-constexpr std::size_t MIN_POLYGON_BINS = 8;
-/** How far, in edges, a polygon keeps from its border component. */
-constexpr int POLYGON_MARGIN_EDGES = 2;
 /** How many edges apart border vertices of one component may be. */
 constexpr int BRIDGE_EDGES = 2;
 /** The smallest eigenvalue, per vertex, of the sum of the projections across the
@@ -70,36 +67,6 @@ borderGap (SimplexIndex v,
   if (widest <= BORDER_GAP)
     return Eigen::Vector3d::Zero();
   return std::cos (middle) * axes.col (0) + std::sin (middle) * axes.col (1);
-}
-
-/** The vertices reached from \a start (itself included, in the order found) through
- * paths of at most \a max_steps edges whose vertices \a admit accepts, using
- * \a seen (all 0 on entry and on return) as scratch. */
-template <typename Admit>
-std::vector<SimplexIndex>
-reachFrom (const std::vector<SimplexIndex>& start,
-           const EdgeAdjacency& adjacency,
-           std::vector<std::uint8_t>& seen,
-           int max_steps,
-           Admit admit)
-{
-  std::vector<SimplexIndex> reached = start;
-  for (const SimplexIndex v : start)
-    seen[v] = 1;
-  std::size_t ring_begin = 0;
-  for (int step = 0; step < max_steps && ring_begin < reached.size(); ++step) {
-    const std::size_t ring_end = reached.size();
-    for (std::size_t k = ring_begin; k < ring_end; ++k)
-      for (const auto& entry : adjacency.neighbors (reached[k]))
-        if (!seen[entry.neighbor] && admit (entry.neighbor)) {
-          seen[entry.neighbor] = 1;
-          reached.push_back (entry.neighbor);
-        }
-    ring_begin = ring_end;
-  }
-  for (const SimplexIndex v : reached)
-    seen[v] = 0;
-  return reached;
 }
 
 /** Admits every vertex (reachFrom()). */
@@ -152,44 +119,10 @@ holeCentre (const std::vector<SimplexIndex>& component,
   return std::make_pair (centre + origin, *middle);
 }
 
-/** The farthest of \a vertices from \a centre in each of \a bins angle bins around
- * it, in the plane of \a axes (columns 0 and 1), in angle order. */
-std::vector<SimplexIndex>
-starPolygon (const std::vector<SimplexIndex>& vertices,
-             const std::vector<Point3d>& positions,
-             const Eigen::Vector3d& centre,
-             const Eigen::Matrix3d& axes,
-             std::size_t bins)
-{
-  struct Farthest {
-    SimplexIndex vertex = INVALID_SIMPLEX;
-    double squared_distance = -1.0;
-  };
-  std::vector<Farthest> farthest (bins);
-  for (const SimplexIndex v : vertices) {
-    const Eigen::Vector3d d = toEigen (positions[v]) - centre;
-    const double x = d.dot (axes.col (0)), y = d.dot (axes.col (1));
-    const double angle = std::atan2 (y, x) + M_PI; // in [0, 2 pi]
-    const auto bin = std::min (
-        bins - 1,
-        static_cast<std::size_t> (angle / (2.0 * M_PI) * static_cast<double> (bins)));
-    const double squared_distance = x * x + y * y;
-    Farthest& best = farthest[bin];
-    if (squared_distance > best.squared_distance ||
-        (squared_distance == best.squared_distance && v < best.vertex))
-      best = {v, squared_distance};
-  }
-  std::vector<SimplexIndex> polygon;
-  for (const Farthest& best : farthest)
-    if (best.vertex != INVALID_SIMPLEX)
-      polygon.push_back (best.vertex);
-  return polygon;
-}
-
 /** The polygon around \a component: around the centre of its hole when its gap
  * directions meet (holeCentre()), the vertices reached within the hole's radius
- * and POLYGON_MARGIN_EDGES edges of it; otherwise around its centroid, the vertices
- * within POLYGON_MARGIN_EDGES edges of it. */
+ * and STAR_POLYGON_MARGIN_EDGES edges of it; otherwise around its centroid, the
+ * vertices within STAR_POLYGON_MARGIN_EDGES edges of it. */
 std::vector<SimplexIndex>
 polygonAround (const std::vector<SimplexIndex>& component,
                const std::vector<Point3d>& positions,
@@ -199,28 +132,24 @@ polygonAround (const std::vector<SimplexIndex>& component,
                std::vector<std::uint8_t>& seen)
 {
   const auto hole = holeCentre (component, positions, gaps);
-  const auto within_reach = [&] (SimplexIndex v) {
-    return (toEigen (positions[v]) - hole->first).norm() <=
-           hole->second + POLYGON_MARGIN_EDGES * radius;
-  };
+  if (hole)
+    return starPolygonAround (hole->first,
+                              hole->second + STAR_POLYGON_MARGIN_EDGES * radius,
+                              component,
+                              positions,
+                              adjacency,
+                              radius,
+                              seen);
   const std::vector<SimplexIndex> vertices =
-      hole ? reachFrom (component,
-                        adjacency,
-                        seen,
-                        std::numeric_limits<int>::max(),
-                        within_reach)
-           : reachFrom (component, adjacency, seen, POLYGON_MARGIN_EDGES, anyVertex);
-  PlaneFit plane (positions[vertices.front()]);
-  for (const SimplexIndex v : hole ? vertices : component)
+      reachFrom (component, adjacency, seen, STAR_POLYGON_MARGIN_EDGES, anyVertex);
+  PlaneFit plane (positions[component.front()]);
+  for (const SimplexIndex v : component)
     plane.add (positions[v]);
-  const Eigen::Vector3d centre = hole ? hole->first : plane.centroid();
-  const std::size_t bins =
-      hole
-          ? std::max (MIN_POLYGON_BINS,
-                      static_cast<std::size_t> (std::ceil (
-                          2.0 * M_PI * (hole->second / radius + POLYGON_MARGIN_EDGES))))
-          : std::max (MIN_POLYGON_BINS, component.size());
-  return starPolygon (vertices, positions, centre, plane.principalAxes(), bins);
+  return starPolygon (vertices,
+                      positions,
+                      plane.centroid(),
+                      plane.principalAxes(),
+                      std::max (MIN_STAR_POLYGON_BINS, component.size()));
 }
 
 } // namespace

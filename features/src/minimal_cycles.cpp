@@ -2,6 +2,7 @@
 #include <pcl/tda/features/distance_grid.h>
 #include <pcl/tda/features/minimal_cycles.h>
 #include <pcl/tda/features/projected_polygon.h>
+#include <pcl/tda/features/star_polygon.h>
 #include <pcl/tda/search/radius_edges.h>
 
 #include <omp.h>
@@ -77,6 +78,14 @@ private:
   std::vector<SimplexIndex> parent_;
   std::vector<std::uint32_t> depth_;
 };
+
+/** How far, in units of its clearance (plus STAR_POLYGON_MARGIN_EDGES edges), the
+ * star polygon around an empty region that a polygon cut through reaches: the
+ * region's widest point can lie anywhere in its hole, up to its edge. */
+constexpr double REGROW_REACH_PER_CLEARANCE = 1.5;
+/** How many times in a row an empty region that a polygon cut through is searched
+ * again from a star polygon around it (windingRims()). */
+constexpr int MAX_REGROWTHS = 3;
 
 /** Empty regions inside a polygon are searched on a grid of at most this many cells
  * a side over the polygon's box. */
@@ -195,7 +204,10 @@ public:
   , positions_ (positions)
   , min_cell_ (min_cell)
   , min_clearance_ (min_clearance)
+  , longest_edge_ (lengths.empty() ? 0.0
+                                   : *std::max_element (lengths.begin(), lengths.end()))
   , vertices_ (positions.size())
+  , seen_ (positions.size(), 0)
   {}
 
   /** The rims around the empty regions inside the polygon of \a cycle, each
@@ -206,7 +218,7 @@ public:
   rims (const std::vector<SimplexIndex>& cycle, SimplexIndex class_edge)
   {
     std::vector<MinimalCycle> result;
-    for (const MinimalCycle& first : windingRims (cycle, class_edge)) {
+    for (const MinimalCycle& first : windingRims (cycle, class_edge, MAX_REGROWTHS)) {
       std::optional<MinimalCycle> again = foundAgain (first.vertices);
       if (again) {
         again->class_edge = class_edge;
@@ -226,7 +238,7 @@ private:
     const auto known = found_again_.find (rim);
     if (known != found_again_.end())
       return known->second;
-    std::vector<MinimalCycle> again = windingRims (rim, INVALID_SIMPLEX);
+    std::vector<MinimalCycle> again = windingRims (rim, INVALID_SIMPLEX, 0);
     const auto widest = std::max_element (
         again.begin(), again.end(), [] (const MinimalCycle& a, const MinimalCycle& b) {
           return a.clearance < b.clearance;
@@ -238,9 +250,18 @@ private:
     return result;
   }
 
-  /** The shortest cycles around the empty regions inside the polygon of \a cycle. */
+  /** The shortest cycles around the empty regions inside the polygon of \a cycle.
+   * An empty region that no cycle of the region inside the polygon goes around lies
+   * across the polygon: the polygon cuts through its hole (a border polygon built
+   * around a centre guessed off the hole's, on a curved or noisy surface). Up to
+   * \a regrowths times, such a region is searched again from the star polygon around
+   * its widest point that reaches REGROW_REACH_PER_CLEARANCE times its clearance and
+   * STAR_POLYGON_MARGIN_EDGES edges beyond (its clearance, measured inside the
+   * polygon, grows as the polygon covers more of the hole). */
   std::vector<MinimalCycle>
-  windingRims (const std::vector<SimplexIndex>& cycle, SimplexIndex class_edge)
+  windingRims (const std::vector<SimplexIndex>& cycle,
+               SimplexIndex class_edge,
+               int regrowths)
   {
     const ProjectedPolygon polygon (positions_, cycle);
     ++generation_;
@@ -265,6 +286,7 @@ private:
     if (holes.empty())
       return result;
     keepCycleEdgesAndChords (polygon, region, region_points);
+    std::vector<MinimalCycle> open;
     for (const EmptyPoint& hole : holes) {
       MinimalCycle rim;
       rim.class_edge = class_edge;
@@ -274,7 +296,27 @@ private:
                                      hole.position.x() * polygon.axisU() +
                                      hole.position.y() * polygon.axisV();
       rim.hole_center = {center.x(), center.y(), center.z()};
-      if (rim.vertices.size() >= 3)
+      (rim.vertices.size() >= 3 ? result : open).push_back (std::move (rim));
+    }
+    if (regrowths == 0)
+      return result;
+    // The region's vertices are kept: the searches below reuse the finder's state.
+    for (const MinimalCycle& hole : open) {
+      const Eigen::Vector3d centre (
+          hole.hole_center[0], hole.hole_center[1], hole.hole_center[2]);
+      const double reach = REGROW_REACH_PER_CLEARANCE * hole.clearance +
+                           STAR_POLYGON_MARGIN_EDGES * longest_edge_;
+      std::vector<SimplexIndex> start;
+      for (const SimplexIndex v : region)
+        if ((Eigen::Vector3d (positions_[v][0], positions_[v][1], positions_[v][2]) -
+             centre)
+                .norm() <= reach)
+          start.push_back (v);
+      const std::vector<SimplexIndex> star = starPolygonAround (
+          centre, reach, start, positions_, graph_, longest_edge_, seen_);
+      if (star.size() < 3)
+        continue;
+      for (MinimalCycle& rim : windingRims (star, class_edge, regrowths - 1))
         result.push_back (std::move (rim));
     }
     return result;
@@ -450,8 +492,10 @@ private:
   const std::vector<Point3d>& positions_;
   double min_cell_;
   double min_clearance_;
+  double longest_edge_;
   std::uint32_t generation_ = 0;
   std::vector<VertexState> vertices_;
+  std::vector<std::uint8_t> seen_;
   std::uint32_t cycle_length_ = 0;
   RegionGraph region_graph_;
   /** Per arc of region_graph_, whether keepCycleEdgesAndChords() keeps it. */

@@ -1,13 +1,15 @@
 /** borderPolygons() on a square grid with a round hole: the outer border and the
  * rim give one polygon each, and both hold the hole, whose rim minimalCycles()
- * then finds. */
+ * then finds; also from a star polygon that cuts through the hole. */
 #include <pcl/tda/common/edge_adjacency.h>
 #include <pcl/tda/features/border_polygons.h>
+#include <pcl/tda/features/star_polygon.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace {
@@ -98,6 +100,52 @@ TEST (BorderPolygons, OuterBorderAndHoleRimEachGiveAPolygonAroundThem)
       for (const SimplexIndex v : rim.vertices)
         EXPECT_LT (distanceFromCentre (grid.positions[v]), HOLE_RADIUS + 1.0);
     }
+  }
+}
+
+TEST (BorderPolygons, APolygonThatCutsThroughTheHoleStillGivesItsRim)
+{
+  // A star polygon around a point of the hole's edge holds half of the hole: no
+  // cycle inside it goes around the hole. The search grows a star polygon around
+  // the widest point of that half, and finds the whole rim.
+  const Grid grid = gridWithHole();
+  const Eigen::Vector3d edge_point (HOLE_RADIUS, 0.0, 0.0);
+  std::vector<SimplexIndex> near_edge;
+  for (SimplexIndex v = 0; v < grid.positions.size(); ++v)
+    if (pcl::tda::distance (grid.positions[v], {HOLE_RADIUS, 0.0, 0.0}) <= HOLE_RADIUS)
+      near_edge.push_back (v);
+  std::vector<std::uint8_t> seen (grid.positions.size(), 0);
+  const std::vector<SimplexIndex> star = pcl::tda::starPolygonAround (
+      edge_point, HOLE_RADIUS, near_edge, grid.positions, grid.adjacency, RADIUS, seen);
+  ASSERT_GE (star.size(), 8u);
+  for (const SimplexIndex v : star)
+    EXPECT_LE (pcl::tda::distance (grid.positions[v], {HOLE_RADIUS, 0.0, 0.0}),
+               HOLE_RADIUS);
+  EXPECT_TRUE (
+      std::all_of (seen.begin(), seen.end(), [] (std::uint8_t s) { return s == 0; }));
+
+  for (const unsigned int threads : {1u, 2u}) {
+    const std::vector<pcl::tda::MinimalCycle> rims = pcl::tda::minimalCycles (
+        pcl::tda::FilteredComplex (grid.positions.size(), grid.edges, {}),
+        {{star, pcl::tda::INVALID_SIMPLEX}},
+        grid.positions,
+        grid.adjacency,
+        RADIUS,
+        threads);
+    ASSERT_EQ (rims.size(), 1u);
+    EXPECT_NEAR (rims[0].clearance, HOLE_RADIUS + 0.5, 0.6);
+    EXPECT_GE (rims[0].vertices.size(), 16u);
+    double largest_angle_step = 0.0;
+    for (std::size_t i = 0; i < rims[0].vertices.size(); ++i) {
+      const Point3d& a = grid.positions[rims[0].vertices[i]];
+      const Point3d& b =
+          grid.positions[rims[0].vertices[(i + 1) % rims[0].vertices.size()]];
+      EXPECT_LT (distanceFromCentre (a), HOLE_RADIUS + 1.0);
+      const double step = std::abs (std::remainder (
+          std::atan2 (b[1], b[0]) - std::atan2 (a[1], a[0]), 2.0 * M_PI));
+      largest_angle_step = std::max (largest_angle_step, step);
+    }
+    EXPECT_LT (largest_angle_step, M_PI / 4.0); // all the way round, step by step
   }
 }
 
