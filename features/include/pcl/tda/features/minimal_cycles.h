@@ -101,6 +101,11 @@ classCycles (const FilteredComplex& complex,
  *    around the centre an odd number of times (Dijkstra by edge length on two copies
  *    of the graph, the copy switched by every crossing of a ray from the centre),
  *    from the vertex nearest the centre.
+ * 5. When no such path exists, the polygon cuts through the region's hole (a
+ *    border polygon around a centre guessed off the hole's): the region is searched
+ *    again, up to three times, from the star polygon around its widest point
+ *    (starPolygonAround()) that reaches 1.5 times its clearance and two edges
+ *    beyond.
  *
  * Initial cycles are independent: they are searched in parallel, and each result
  * depends only on the complex, not on the number of threads. Several initial cycles
