@@ -52,7 +52,7 @@ public:
   coboundary (SimplexIndex edge, CycleSet& coboundary)
   {
     coboundary.clear();
-    common_neighbors_.forEach (edge, false, [&] (SimplexIndex uw, SimplexIndex vw) {
+    common_neighbors_.forEach (edge, [&] (SimplexIndex uw, SimplexIndex vw) {
       const SimplexIndex triangle = triangleOf (edge, uw, vw);
       if (triangle != INVALID_SIMPLEX)
         coboundary.push_back (triangle);

@@ -19,14 +19,12 @@ buildEdgeAdjacency (std::size_t num_vertices,
   for (std::size_t v = 0; v < num_vertices; ++v)
     adjacency.offsets[v + 1] += adjacency.offsets[v];
   adjacency.entries = largeVector<EdgeAdjacency::Entry> (adjacency.offsets.back());
-  adjacency.positions = largeVector<std::array<std::uint64_t, 2>> (edges.size());
   std::vector<std::uint64_t> next (adjacency.offsets.begin(),
                                    adjacency.offsets.end() - 1);
   for (SimplexIndex e = 0; e < edges.size(); ++e) {
-    const FilteredEdge& edge = edges[e];
-    adjacency.positions[e] = {next[edge.source], next[edge.target]};
     if (keep && !keep (e))
       continue;
+    const FilteredEdge& edge = edges[e];
     adjacency.entries[next[edge.source]++] = {edge.target, e};
     adjacency.entries[next[edge.target]++] = {edge.source, e};
   }

@@ -2,7 +2,7 @@
 #include <pcl/tda/common/edge_adjacency.h>
 #include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/search/clique_persistence.h>
-#include <pcl/tda/search/radius_edges.h>
+#include <pcl/tda/search/youngest_edge_triangles.h>
 
 #include <algorithm>
 #include <limits>
@@ -46,32 +46,22 @@ struct ApparentPairs {
 };
 
 ApparentPairs
-findApparentPairs (const std::vector<FilteredEdge>& edges,
-                   const EdgeAdjacency& adjacency,
+findApparentPairs (const EdgeAdjacency& adjacency,
                    const std::vector<std::uint8_t>& edge_positive,
                    unsigned int threads)
 {
   ApparentPairs pairs;
-  pairs.middle = largeVector<SimplexIndex> (edges.size(), INVALID_SIMPLEX);
-  const auto m = static_cast<std::int64_t> (edges.size());
-  std::uint64_t num_triangles = 0;
-#pragma omp parallel num_threads(resolveThreads(threads)) reduction(+ : num_triangles)
-  {
-    CommonNeighborSearch search (edges, adjacency);
-#pragma omp for schedule(dynamic, 1024)
-    for (std::int64_t e = 0; e < m; ++e) {
-      SimplexIndex oldest_middle = INVALID_SIMPLEX;
-      // Through older edges only: the triangles whose youngest edge is e.
-      search.forEach (
-          static_cast<SimplexIndex> (e), true, [&] (SimplexIndex uw, SimplexIndex vw) {
-            ++num_triangles;
-            oldest_middle = std::min (oldest_middle, std::max (uw, vw));
-          });
-      if (edge_positive[e])
-        pairs.middle[e] = oldest_middle;
-    }
-  }
-  pairs.num_triangles = num_triangles;
+  pairs.middle = largeVector<SimplexIndex> (edge_positive.size(), INVALID_SIMPLEX);
+  pairs.num_triangles = forEachEdgeWithYoungestTriangles (
+      adjacency, threads, {}, [&] (SimplexIndex e, const auto& triangles) {
+        // Every edge's triangles are enumerated: they are all counted.
+        SimplexIndex oldest_middle = INVALID_SIMPLEX;
+        triangles ([&] (SimplexIndex uw, SimplexIndex vw) {
+          oldest_middle = std::min (oldest_middle, std::max (uw, vw));
+        });
+        if (edge_positive[e])
+          pairs.middle[e] = oldest_middle;
+      });
   return pairs;
 }
 
@@ -99,7 +89,7 @@ public:
   coboundary (SimplexIndex edge, std::vector<Key>& column)
   {
     column.clear();
-    common_neighbors_.forEach (edge, false, [&] (SimplexIndex uw, SimplexIndex vw) {
+    common_neighbors_.forEach (edge, [&] (SimplexIndex uw, SimplexIndex vw) {
       const SimplexIndex youngest = std::max ({edge, uw, vw});
       const SimplexIndex oldest = std::min ({edge, uw, vw});
       column.push_back (triangleKey (youngest, edge ^ uw ^ vw ^ youngest ^ oldest));
@@ -150,7 +140,7 @@ computeCliqueH1Persistence (const FilteredComplex& skeleton,
   const auto& edges = skeleton.edges();
   const EdgeAdjacency adjacency = buildEdgeAdjacency (skeleton.numVertices(), edges);
   const ApparentPairs apparent =
-      findApparentPairs (edges, adjacency, h0.edge_positive, threads);
+      findApparentPairs (adjacency, h0.edge_positive, threads);
   CliqueCoboundaries coboundaries (edges, adjacency, apparent.middle);
   reduceEdgeCoboundaries (h0.edge_positive, coboundaries, progress);
 

@@ -9,8 +9,7 @@
 
 using namespace pcl::tda;
 
-// The lists hold, per vertex, exactly the kept edges at it, by edge id; the prefix
-// before an edge's position holds the older ones.
+// The lists hold, per vertex, exactly the kept edges at it, by edge id.
 TEST (EdgeAdjacency, ListsEqualBruteForceWithAndWithoutFilter)
 {
   for (unsigned int k = 0; k < test::RANDOM_CASES; k += 3) {
@@ -31,53 +30,36 @@ TEST (EdgeAdjacency, ListsEqualBruteForceWithAndWithoutFilter)
           actual.emplace_back (entry.neighbor, entry.edge);
         ASSERT_EQ (actual, expected) << "case " << k << " vertex " << v;
       }
-      for (SimplexIndex e = 0; e < edges.size(); ++e)
-        for (int side = 0; side < 2; ++side) {
-          const SimplexIndex vertex = side == 0 ? edges[e].source : edges[e].target;
-          for (const auto& entry : adjacency.olderNeighbors (vertex, e, side))
-            ASSERT_LT (entry.edge, e) << "case " << k;
-          const auto older = adjacency.olderNeighbors (vertex, e, side);
-          const auto all = adjacency.neighbors (vertex);
-          const auto count_older =
-              std::count_if (all.begin(), all.end(), [e] (const auto& entry) {
-                return entry.edge < e;
-              });
-          ASSERT_EQ (older.end() - older.begin(), count_older) << "case " << k;
-        }
     }
   }
 }
 
-// The common neighbours of an edge's ends, all or through older edges only, are
-// those of a brute-force search.
+// The common neighbours of an edge's ends are those of a brute-force search.
 TEST (EdgeAdjacency, CommonNeighborsEqualBruteForce)
 {
   for (unsigned int k = 0; k < test::RANDOM_CASES; k += 3) {
     const FilteredComplex complex = test::randomComplexCase (k);
     const auto& edges = complex.edges();
     const EdgeAdjacency adjacency = buildEdgeAdjacency (complex.numVertices(), edges);
-    for (const bool older_only : {false, true}) {
-      CommonNeighborSearch search (edges, adjacency);
-      for (SimplexIndex e = 0; e < edges.size(); ++e) {
-        std::set<std::pair<SimplexIndex, SimplexIndex>> expected, actual;
-        for (SimplexIndex a = 0; a < edges.size(); ++a)
-          for (SimplexIndex b = 0; b < edges.size(); ++b) {
-            if (a == e || b == e || (older_only && (a > e || b > e)))
-              continue;
-            const auto other = [] (const FilteredEdge& edge, SimplexIndex v) {
-              return edge.source == v   ? edge.target
-                     : edge.target == v ? edge.source
-                                        : INVALID_SIMPLEX;
-            };
-            const SimplexIndex w = other (edges[a], edges[e].source);
-            if (w != INVALID_SIMPLEX && w == other (edges[b], edges[e].target))
-              expected.emplace (a, b);
-          }
-        search.forEach (e, older_only, [&] (SimplexIndex uw, SimplexIndex vw) {
-          actual.emplace (uw, vw);
-        });
-        ASSERT_EQ (actual, expected) << "case " << k << " edge " << e;
-      }
+    CommonNeighborSearch search (edges, adjacency);
+    for (SimplexIndex e = 0; e < edges.size(); ++e) {
+      std::set<std::pair<SimplexIndex, SimplexIndex>> expected, actual;
+      for (SimplexIndex a = 0; a < edges.size(); ++a)
+        for (SimplexIndex b = 0; b < edges.size(); ++b) {
+          if (a == e || b == e)
+            continue;
+          const auto other = [] (const FilteredEdge& edge, SimplexIndex v) {
+            return edge.source == v   ? edge.target
+                   : edge.target == v ? edge.source
+                                      : INVALID_SIMPLEX;
+          };
+          const SimplexIndex w = other (edges[a], edges[e].source);
+          if (w != INVALID_SIMPLEX && w == other (edges[b], edges[e].target))
+            expected.emplace (a, b);
+        }
+      search.forEach (
+          e, [&] (SimplexIndex uw, SimplexIndex vw) { actual.emplace (uw, vw); });
+      ASSERT_EQ (actual, expected) << "case " << k << " edge " << e;
     }
   }
 }

@@ -2,7 +2,6 @@
 
 #include <pcl/tda/common/filtered_complex.h>
 
-#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -42,9 +41,6 @@ struct EdgeAdjacency {
 
   std::vector<std::uint64_t> offsets;
   std::vector<Entry> entries;
-  /** Per edge of the input list (kept or not): its position in the lists of its
-   * source and of its target, i.e. the end of the entries through older edges. */
-  std::vector<std::array<std::uint64_t, 2>> positions;
 
   std::size_t
   numVertices () const
@@ -57,14 +53,6 @@ struct EdgeAdjacency {
   neighbors (SimplexIndex vertex) const
   {
     return {entries.data() + offsets[vertex], entries.data() + offsets[vertex + 1]};
-  }
-
-  /** \brief The neighbours of end \a side (0: source, 1: target) \a vertex of edge
-   * \a edge through edges older than \a edge. */
-  Range
-  olderNeighbors (SimplexIndex vertex, SimplexIndex edge, int side) const
-  {
-    return {entries.data() + offsets[vertex], entries.data() + positions[edge][side]};
   }
 };
 
@@ -95,17 +83,17 @@ public:
   {}
 
   /** \brief Calls \a visit(uw, vw) for every vertex w adjacent to both ends u, v of
-   * edge \a e, with the ids of the edges uw and vw. With \a older_only, only through
-   * edges older than \a e: in a clique complex, the triangles whose youngest edge is
-   * \a e. Searches of one edge must all use the same \a older_only. */
+   * edge \a e, with the ids of the edges uw and vw: in a clique complex, the
+   * triangles on \a e (forEachEdgeWithYoungestTriangles() finds those whose youngest
+   * edge is \a e, for all edges at once). */
   template <typename Visit>
   void
-  forEach (SimplexIndex e, bool older_only, Visit visit)
+  forEach (SimplexIndex e, Visit visit)
   {
     const FilteredEdge& edge = edges_[e];
-    for (const auto& entry : neighborsOf (edge.source, e, 0, older_only))
+    for (const auto& entry : adjacency_.neighbors (edge.source))
       marks_[entry.neighbor] = {e, entry.edge};
-    for (const auto& entry : neighborsOf (edge.target, e, 1, older_only)) {
+    for (const auto& entry : adjacency_.neighbors (edge.target)) {
       const Mark& mark = marks_[entry.neighbor];
       if (mark.edge_searched == e)
         visit (mark.edge_to_source, entry.edge);
@@ -117,13 +105,6 @@ private:
     SimplexIndex edge_searched;  // the edge whose search marked the vertex last
     SimplexIndex edge_to_source; // the edge from the vertex to that edge's source
   };
-
-  EdgeAdjacency::Range
-  neighborsOf (SimplexIndex vertex, SimplexIndex e, int side, bool older_only) const
-  {
-    return older_only ? adjacency_.olderNeighbors (vertex, e, side)
-                      : adjacency_.neighbors (vertex);
-  }
 
   const std::vector<FilteredEdge>& edges_;
   const EdgeAdjacency& adjacency_;
