@@ -1,3 +1,4 @@
+#include <pcl/tda/common/angular_gap.h>
 #include <pcl/tda/common/plane_fit.h>
 #include <pcl/tda/features/border_polygons.h>
 #include <pcl/tda/features/star_polygon.h>
@@ -56,17 +57,10 @@ borderGap (SimplexIndex v,
     const Eigen::Vector3d d = toEigen (positions[entry.neighbor]) - origin;
     angles.push_back (std::atan2 (d.dot (axes.col (1)), d.dot (axes.col (0))));
   }
-  std::sort (angles.begin(), angles.end());
-  double widest = angles.front() + 2.0 * M_PI - angles.back();
-  double middle = angles.back() + widest / 2.0;
-  for (std::size_t k = 1; k < angles.size(); ++k)
-    if (angles[k] - angles[k - 1] > widest) {
-      widest = angles[k] - angles[k - 1];
-      middle = angles[k - 1] + widest / 2.0;
-    }
-  if (widest <= BORDER_GAP)
+  const AngularGap gap = widestAngularGap (angles);
+  if (gap.width <= BORDER_GAP)
     return Eigen::Vector3d::Zero();
-  return std::cos (middle) * axes.col (0) + std::sin (middle) * axes.col (1);
+  return std::cos (gap.middle) * axes.col (0) + std::sin (gap.middle) * axes.col (1);
 }
 
 /** Admits every vertex (reachFrom()). */

@@ -21,6 +21,7 @@
 #include <pcl/io/pcd_io.h>
 #include <pcl/kdtree/kdtree_flann.h>
 #include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/common/angular_gap.h>
 #include <pcl/tda/common/plane_fit.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/features/projected_polygon.h>
@@ -78,11 +79,7 @@ surrounds (const Cloud& scan, const pcl::Indices& ring, const Eigen::Vector3f& c
     const Eigen::Vector3d d = (scan[i].getVector3fMap() - centre).cast<double>();
     angles.push_back (std::atan2 (d.dot (axes.col (1)), d.dot (axes.col (0))));
   }
-  std::sort (angles.begin(), angles.end());
-  double widest = angles.front() + 2.0 * M_PI - angles.back();
-  for (std::size_t k = 1; k < angles.size(); ++k)
-    widest = std::max (widest, angles[k] - angles[k - 1]);
-  return widest <= MAX_SURROUNDING_GAP;
+  return pcl::tda::widestAngularGap (angles).width <= MAX_SURROUNDING_GAP;
 }
 
 /** Up to \a count holes of radius \a hole_radius cut into \a scan around points well
