@@ -50,6 +50,7 @@ std::vector<PersistencePair>
 PersistenceResult::pairs (const FilteredComplex& complex, int max_dimension) const
 {
   std::vector<PersistencePair> result;
+  result.reserve (vertex_killer.size()); // one H0 pair per vertex
   forEachPair (*this, complex, max_dimension, [&result] (const PersistencePair& pair) {
     result.push_back (pair);
   });
@@ -60,6 +61,7 @@ PersistenceDiagram
 PersistenceResult::diagram (const FilteredComplex& complex, int max_dimension) const
 {
   PersistenceDiagram intervals;
+  intervals.reserve (vertex_killer.size()); // at most one H0 interval per vertex
   forEachPair (
       *this, complex, max_dimension, [&intervals] (const PersistencePair& pair) {
         if (pair.birth != pair.death)
