@@ -14,7 +14,6 @@
 
 #include <pcl/common/common.h>
 #include <pcl/common/point_tests.h>
-#include <pcl/console/parse.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/search/kdtree.h>
 #include <pcl/tda/gpu/vietoris_rips_builder.h>
@@ -24,6 +23,7 @@
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/point_types.h>
 
+#include "bench_command_line.h"
 #include "bench_statistics.h"
 #include "complex_difference.h"
 #include <omp.h>
@@ -139,23 +139,47 @@ struct PhaseMedians {
   }
 };
 
+void
+printUsage (std::FILE* stream)
+{
+  std::fprintf (
+      stream,
+      "Usage: pcl_tda_bench_gpu_builder [scan.pcd] [-runs N] [-degree D] "
+      "[-seed S]\n"
+      "  scan.pcd  the scan (default %s/table_scene_mug_stereo_textured.pcd)\n"
+      "  -runs N   runs per measurement, medians reported (default 5)\n"
+      "  -degree D neighbours per point the radius gives (default 12)\n"
+      "  -seed S   seed of the subsamples and the jitter (default 1)\n",
+      PCL_TDA_DATA_DIR);
+}
+
+void
+parseOptions (int argc, char** argv, Options& options)
+{
+  long runs = options.runs, seed = options.seed;
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addInteger ("-runs", runs, 1, 1000);
+  command_line.addNumber (
+      "-degree", options.degree, pcl::tda::NumberRange::above (0.0));
+  command_line.addInteger ("-seed", seed, 0, 0xffffffffL);
+  const std::vector<std::string> scans = command_line.parse (argc, argv);
+  if (scans.size() > 1)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one scan.");
+  if (!scans.empty())
+    options.input = scans[0];
+  options.runs = static_cast<int> (runs);
+  options.seed = static_cast<unsigned int> (seed);
+}
+
 } // namespace
 
 int
 main (int argc, char** argv)
 {
   Options options;
-  const std::vector<int> files =
-      pcl::console::parse_file_extension_argument (argc, argv, ".pcd");
-  if (!files.empty())
-    options.input = argv[files[0]];
-  pcl::console::parse_argument (argc, argv, "-runs", options.runs);
-  pcl::console::parse_argument (argc, argv, "-degree", options.degree);
-  pcl::console::parse_argument (argc, argv, "-seed", options.seed);
-  if (options.runs < 1 || !(options.degree > 0.0)) {
-    std::fprintf (stderr, "-runs must be at least 1 and -degree positive\n");
-    return 1;
-  }
+  if (const auto stop = pcl::tda::bench::parseCommandLine (
+          argc, argv, options, parseOptions, printUsage))
+    return *stop;
   Cloud loaded, scan;
   if (pcl::io::loadPCDFile (options.input, loaded) != 0) {
     std::fprintf (stderr,
