@@ -28,7 +28,8 @@ namespace tda {
  * \param[in] adjacency the adjacency lists of the edges, sorted by edge id
  * \param[in] threads OpenMP threads (0: OpenMP's default)
  * \param[in] progress told the vertices done, when set
- * \return the number of triangles
+ * \return the number of triangles visited: all of them when every visit_edge()
+ * enumerates its edge's triangles
  */
 template <typename VisitEdge>
 std::uint64_t
