@@ -9,11 +9,13 @@
 #include <pcl/tda/common/diagram_io.h>
 #include <pcl/point_types.h>
 
+#include "bench_command_line.h"
 #include "bench_statistics.h"
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -35,18 +37,66 @@ timeCommand (const std::string& command)
   return status == 0 ? elapsed.count() : -1.0;
 }
 
+struct Options {
+  std::string input;
+  double radius = 0.0;
+  int runs = 5;
+};
+
+void
+printUsage (std::FILE* stream)
+{
+  std::fprintf (stream,
+                "Usage: pcl_tda_bench_barcode input.pcd radius [runs]\n"
+                "  Times pcl_tda_barcode (PCD file to H0 + H1 diagram) against Ripser "
+                "in\n  point-cloud mode on the same points and radius; runs: per "
+                "tool, medians\n  reported (default 5).\n");
+}
+
+/** A positive number, or an integer of at least 1 (\a integer), from \a text.
+ * \throws pcl::BadArgumentException naming \a what when \a text is not one */
+double
+positiveNumber (const std::string& text, const char* what, bool integer)
+{
+  char* end = nullptr;
+  const double value = std::strtod (text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value > 0.0) || !std::isfinite (value) ||
+      (integer && (value != std::floor (value) || value > 1000.0)))
+    PCL_THROW_EXCEPTION (
+        pcl::BadArgumentException,
+        "The " << what << " must be "
+               << (integer ? "an integer from 1 to 1000" : "a positive number")
+               << ", not '" << text << "'.");
+  return value;
+}
+
+/** \throws pcl::BadArgumentException on a bad command line */
+void
+parseOptions (int argc, char** argv, Options& options)
+{
+  const std::vector<std::string> arguments =
+      pcl::tda::ToolCommandLine().parse (argc, argv);
+  if (arguments.size() < 2 || arguments.size() > 3)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "Give the input file, the radius and optionally the runs.");
+  options.input = arguments[0];
+  options.radius = positiveNumber (arguments[1], "radius", false);
+  if (arguments.size() == 3)
+    options.runs = static_cast<int> (positiveNumber (arguments[2], "runs", true));
+}
+
 } // namespace
 
 int
 main (int argc, char** argv)
 {
-  if (argc < 3) {
-    std::fprintf (stderr, "Usage: %s input.pcd radius [runs]\n", argv[0]);
-    return 1;
-  }
-  const std::string input = argv[1];
-  const double radius = std::atof (argv[2]);
-  const int runs = argc > 3 ? std::max (1, std::atoi (argv[3])) : 5;
+  Options options;
+  if (const auto stop = pcl::tda::bench::parseCommandLine (
+          argc, argv, options, parseOptions, printUsage))
+    return *stop;
+  const std::string& input = options.input;
+  const double radius = options.radius;
+  const int runs = options.runs;
 
   pcl::PointCloud<pcl::PointXYZ> cloud;
   if (pcl::io::loadPCDFile (input, cloud) < 0)

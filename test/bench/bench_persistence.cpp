@@ -10,7 +10,6 @@
 // JSON object. Exit status: 0 when all diagrams agree, 2 when some differ, 1 on error.
 
 #include <pcl/common/common.h>
-#include <pcl/console/parse.h>
 #include <pcl/filters/filter.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/apps/voxel_grid_filter.h>
@@ -63,6 +62,7 @@
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
 using Clock = std::chrono::steady_clock;
 
+#include "bench_command_line.h"
 #include "common/test_utils.h"
 
 namespace {
@@ -86,12 +86,12 @@ struct Options {
 };
 
 void
-printHelp (const char* program)
+printUsage (std::FILE* stream)
 {
   std::fprintf (
-      stderr,
-      "Usage: %s input.pcd radius [options]\n"
-      "       %s input.pcd -find-radius DEGREE [options]\n"
+      stream,
+      "Usage: pcl_tda_bench_persistence input.pcd radius [options]\n"
+      "       pcl_tda_bench_persistence input.pcd -find-radius DEGREE [options]\n"
       "Times H0 + H1 persistence of the Vietoris-Rips filtration up to radius by our\n"
       "pipeline, Ripser, GUDHI and PHAT on the same points and compares the diagrams.\n"
       "  -n N          random subsample of N points (larger than the cloud: jittered\n"
@@ -110,13 +110,12 @@ printHelp (const char* program)
       "                all five), our H1 engines on the listed triangles cohomology,\n"
       "                standard, incremental, fip (engines: all four), all\n"
       "  -find-radius DEGREE  instead of benchmarking, print the radius at which the\n"
-      "                complex has average vertex degree DEGREE (2 edges / points)\n",
-      program,
-      program);
+      "                complex has average vertex degree DEGREE (2 edges / points)\n");
 }
 
-/** Adds the tools of a -tools list: tool names and the groups phat, engines, all. */
-bool
+/** Adds the tools of a -tools list: tool names and the groups phat, engines, all.
+ * \throws pcl::BadArgumentException on an unknown name */
+void
 parseTools (const std::string& list, std::set<std::string>& tools)
 {
   std::set<std::string> phat, known = {"ripser", "ripser-sparse", "gudhi"};
@@ -135,46 +134,46 @@ parseTools (const std::string& list, std::set<std::string>& tools)
       tools.insert (OUR_ENGINES.begin(), OUR_ENGINES.end());
     else if (known.count (item))
       tools.insert (item);
-    else if (!item.empty()) {
-      std::fprintf (stderr, "Unknown tool '%s' in -tools.\n", item.c_str());
-      return false;
-    }
+    else if (!item.empty())
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Unknown tool '" << item << "' in -tools.");
   }
-  return true;
 }
 
-bool
+/** \throws pcl::BadArgumentException on a bad command line */
+void
 parseOptions (int argc, char** argv, Options& options)
 {
-  using pcl::console::parse_argument;
-  if (argc < 3)
-    return false;
-  options.input = argv[1];
-  const bool find_radius =
-      parse_argument (argc, argv, "-find-radius", options.find_degree) >= 0;
-  if (find_radius && !(options.find_degree > 0.0)) {
-    std::fprintf (stderr, "-find-radius needs a positive degree.\n");
-    return false;
-  }
+  long points = options.points, seed = options.seed, runs = options.runs;
+  std::string tools = "all";
+  pcl::tda::ToolCommandLine command_line;
+  command_line.addNumber (
+      "-find-radius", options.find_degree, pcl::tda::NumberRange::above (0.0));
+  command_line.addInteger ("-n", points, 0, 1000000000L);
+  command_line.addInteger ("-seed", seed, 0, 0xffffffffL);
+  command_line.addInteger ("-runs", runs, 1, 1000);
+  command_line.addNumber ("-leaf", options.leaf, pcl::tda::NumberRange::atLeast (0.0));
+  command_line.addText ("-tools", tools);
+  const std::vector<std::string> arguments = command_line.parse (argc, argv);
+  const bool find_radius = command_line.given ("-find-radius");
+  if (arguments.size() != (find_radius ? 1u : 2u))
+    PCL_THROW_EXCEPTION (
+        pcl::BadArgumentException,
+        "Give the input file and "
+            << (find_radius ? "no radius (-find-radius chooses it)." : "the radius."));
+  options.input = arguments[0];
   if (!find_radius) {
     char* end = nullptr;
-    options.radius = std::strtod (argv[2], &end);
-    if (*end != '\0' || !(options.radius > 0.0) || !std::isfinite (options.radius)) {
-      std::fprintf (stderr, "The radius must be a positive number, not %s.\n", argv[2]);
-      return false;
-    }
+    options.radius = std::strtod (arguments[1].c_str(), &end);
+    if (*end != '\0' || !(options.radius > 0.0) || !std::isfinite (options.radius))
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "The radius must be a positive number, not '" << arguments[1]
+                                                                         << "'.");
   }
-  parse_argument (argc, argv, "-n", options.points);
-  parse_argument (argc, argv, "-seed", options.seed);
-  parse_argument (argc, argv, "-runs", options.runs);
-  parse_argument (argc, argv, "-leaf", options.leaf);
-  std::string tools = "all";
-  parse_argument (argc, argv, "-tools", tools);
-  if (options.points < 0 || options.runs < 1 || !(options.leaf >= 0.0)) {
-    std::fprintf (stderr, "-n must be >= 0, -runs >= 1 and -leaf >= 0.\n");
-    return false;
-  }
-  return parseTools (tools, options.tools);
+  options.points = static_cast<int> (points);
+  options.seed = static_cast<unsigned int> (seed);
+  options.runs = static_cast<int> (runs);
+  parseTools (tools, options.tools);
 }
 
 // ---------------------------------------------------------------------------------
@@ -1319,10 +1318,9 @@ int
 main (int argc, char** argv)
 {
   Options options;
-  if (!parseOptions (argc, argv, options)) {
-    printHelp (argv[0]);
-    return 1;
-  }
+  if (const auto stop = pcl::tda::bench::parseCommandLine (
+          argc, argv, options, parseOptions, printUsage))
+    return *stop;
   try {
     std::size_t loaded = 0;
     bool jittered = false;
