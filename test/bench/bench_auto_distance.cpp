@@ -113,11 +113,8 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addInteger ("-seed", seed, 0, std::numeric_limits<long>::max());
   command_line.addNumber ("-leaf", options.leaf, pcl::tda::NumberRange::atLeast (0.0));
   command_line.addInteger ("-min", min_size, 1, std::numeric_limits<int>::max());
-  const std::vector<std::string> folders = command_line.parse (argc, argv);
-  if (folders.size() > 1)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one data folder.");
-  if (!folders.empty())
-    options.data = folders[0];
+  pcl::tda::bench::takeOptionalArgument (
+      command_line.parse (argc, argv), "data folder", options.data);
   options.scenes = static_cast<std::size_t> (scenes);
   options.seed = static_cast<std::uint64_t> (seed);
   options.min_size = static_cast<pcl::uindex_t> (min_size);

@@ -15,7 +15,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -53,23 +52,6 @@ printUsage (std::FILE* stream)
                 "tool, medians\n  reported (default 5).\n");
 }
 
-/** A positive number, or an integer of at least 1 (\a integer), from \a text.
- * \throws pcl::BadArgumentException naming \a what when \a text is not one */
-double
-positiveNumber (const std::string& text, const char* what, bool integer)
-{
-  char* end = nullptr;
-  const double value = std::strtod (text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !(value > 0.0) || !std::isfinite (value) ||
-      (integer && (value != std::floor (value) || value > 1000.0)))
-    PCL_THROW_EXCEPTION (
-        pcl::BadArgumentException,
-        "The " << what << " must be "
-               << (integer ? "an integer from 1 to 1000" : "a positive number")
-               << ", not '" << text << "'.");
-  return value;
-}
-
 /** \throws pcl::BadArgumentException on a bad command line */
 void
 parseOptions (int argc, char** argv, Options& options)
@@ -80,9 +62,10 @@ parseOptions (int argc, char** argv, Options& options)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "Give the input file, the radius and optionally the runs.");
   options.input = arguments[0];
-  options.radius = positiveNumber (arguments[1], "radius", false);
+  options.radius = pcl::tda::bench::positiveNumber (arguments[1], "radius", false);
   if (arguments.size() == 3)
-    options.runs = static_cast<int> (positiveNumber (arguments[2], "runs", true));
+    options.runs =
+        static_cast<int> (pcl::tda::bench::positiveNumber (arguments[2], "runs", true));
 }
 
 } // namespace

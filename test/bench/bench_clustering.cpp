@@ -23,6 +23,7 @@
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 #include <pcl/point_types.h>
 
+#include "bench_command_line.h"
 #include "segmentation/cluster_oracles.h"
 
 #include <algorithm>
@@ -168,11 +169,8 @@ main (int argc, char** argv)
   try {
     pcl::tda::ToolCommandLine command_line;
     command_line.addInteger ("-runs", runs_option, 5, 1000);
-    const std::vector<std::string> folders = command_line.parse (argc, argv);
-    if (folders.size() > 1)
-      PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one data folder.");
-    if (!folders.empty())
-      data = folders[0];
+    pcl::tda::bench::takeOptionalArgument (
+        command_line.parse (argc, argv), "data folder", data);
   }
   catch (const pcl::PCLException& error) {
     std::fprintf (stderr, "%s\n", pcl::tda::errorMessage (error).c_str());

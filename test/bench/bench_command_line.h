@@ -5,12 +5,50 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <optional>
+#include <string>
+#include <vector>
 
 namespace pcl {
 namespace tda {
 namespace bench {
+
+/** \brief Sets \a value to the one positional argument of \a arguments, if there is
+ * one (\a value keeps its default otherwise).
+ * \throws pcl::BadArgumentException naming \a what ("data folder", "scan") when
+ * there are more */
+inline void
+takeOptionalArgument (const std::vector<std::string>& arguments,
+                      const char* what,
+                      std::string& value)
+{
+  if (arguments.size() > 1)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one " << what << ".");
+  if (!arguments.empty())
+    value = arguments[0];
+}
+
+/** \brief The positive number, or with \a integer the integer from 1 to 1000, that
+ * \a text spells.
+ * \throws pcl::BadArgumentException naming \a what ("radius", "runs") when it is
+ * not one */
+inline double
+positiveNumber (const std::string& text, const char* what, bool integer)
+{
+  char* end = nullptr;
+  const double value = std::strtod (text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !(value > 0.0) || !std::isfinite (value) ||
+      (integer && (value != std::floor (value) || value > 1000.0)))
+    PCL_THROW_EXCEPTION (
+        pcl::BadArgumentException,
+        "The " << what << " must be "
+               << (integer ? "an integer from 1 to 1000" : "a positive number")
+               << ", not '" << text << "'.");
+  return value;
+}
 
 /** \brief The command line of a benchmark program: with -h, prints the usage to
  * stdout; otherwise parses it into \a options with \a parse (parse(argc, argv,

@@ -162,11 +162,8 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addNumber (
       "-degree", options.degree, pcl::tda::NumberRange::above (0.0));
   command_line.addInteger ("-seed", seed, 0, 0xffffffffL);
-  const std::vector<std::string> scans = command_line.parse (argc, argv);
-  if (scans.size() > 1)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one scan.");
-  if (!scans.empty())
-    options.input = scans[0];
+  pcl::tda::bench::takeOptionalArgument (
+      command_line.parse (argc, argv), "scan", options.input);
   options.runs = static_cast<int> (runs);
   options.seed = static_cast<unsigned int> (seed);
 }

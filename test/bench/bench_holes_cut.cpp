@@ -236,11 +236,8 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addInteger ("-seeds", seeds, 1, 1000);
   command_line.addInteger ("-holes", holes, 1, 100);
   command_line.addText ("-save", options.save);
-  const std::vector<std::string> folders = command_line.parse (argc, argv);
-  if (folders.size() > 1)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one data folder.");
-  if (!folders.empty())
-    options.data = folders[0];
+  pcl::tda::bench::takeOptionalArgument (
+      command_line.parse (argc, argv), "data folder", options.data);
   options.seeds = static_cast<int> (seeds);
   options.holes = static_cast<int> (holes);
 }

@@ -162,14 +162,8 @@ parseOptions (int argc, char** argv, Options& options)
         "Give the input file and "
             << (find_radius ? "no radius (-find-radius chooses it)." : "the radius."));
   options.input = arguments[0];
-  if (!find_radius) {
-    char* end = nullptr;
-    options.radius = std::strtod (arguments[1].c_str(), &end);
-    if (*end != '\0' || !(options.radius > 0.0) || !std::isfinite (options.radius))
-      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                           "The radius must be a positive number, not '" << arguments[1]
-                                                                         << "'.");
-  }
+  if (!find_radius)
+    options.radius = pcl::tda::bench::positiveNumber (arguments[1], "radius", false);
   options.points = static_cast<int> (points);
   options.seed = static_cast<unsigned int> (seed);
   options.runs = static_cast<int> (runs);

@@ -241,11 +241,8 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addInteger ("-seed", seed, 0, std::numeric_limits<long>::max());
   long sweep = 1;
   command_line.addInteger ("-sweep", sweep, 0, 1);
-  const std::vector<std::string> folders = command_line.parse (argc, argv);
-  if (folders.size() > 1)
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Give at most one data folder.");
-  if (!folders.empty())
-    options.data = folders[0];
+  pcl::tda::bench::takeOptionalArgument (
+      command_line.parse (argc, argv), "data folder", options.data);
   options.scenes = static_cast<std::size_t> (scenes);
   options.runs = static_cast<int> (runs);
   options.seed = static_cast<std::uint64_t> (seed);
