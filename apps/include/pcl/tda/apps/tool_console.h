@@ -3,6 +3,7 @@
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
 #include <pcl/tda/apps/cloud_files.h>
+#include <pcl/tda/apps/huge_page_malloc.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
@@ -92,6 +93,7 @@ private:
 
 /** \brief The main() of a tool: "-h" or "--help" prints the help only and exits
  * with 0, fewer than \a least_arguments arguments print it and exit with 1; else
+ * starts the tool again with huge pages for malloc (restartWithHugePageMalloc()),
  * prints \a intro, reads the options with \a parse and returns the exit code of
  * \a run. A refusal (a pcl::PCLException thrown by either) prints its message and
  * exits with 1. */
@@ -109,12 +111,17 @@ runTool (int argc,
     print_help (argv[0]);
     return 0;
   }
-  pcl::console::print_info (
-      "%s For more information, use: %s -h\n", intro.c_str(), argv[0]);
+  const auto print_intro = [&] {
+    pcl::console::print_info (
+        "%s For more information, use: %s -h\n", intro.c_str(), argv[0]);
+  };
   if (argc < least_arguments + 1) {
+    print_intro();
     print_help (argv[0]);
     return 1;
   }
+  restartWithHugePageMalloc (argv);
+  print_intro();
   ToolConsole console;
   try {
     Options options;

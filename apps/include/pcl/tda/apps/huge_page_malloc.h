@@ -1,0 +1,26 @@
+#pragma once
+
+namespace pcl {
+namespace tda {
+
+/** \brief The tunable that has glibc's malloc back the memory it takes from the
+ * system with transparent huge pages (glibc 2.35 and later). */
+constexpr const char* HUGE_PAGE_MALLOC_TUNABLE = "glibc.malloc.hugetlb=1";
+
+/** \brief Starts the tool again, as the same program with the same arguments
+ * (execv() of /proc/self/exe), with HUGE_PAGE_MALLOC_TUNABLE added to GLIBC_TUNABLES;
+ * returns, and the tool goes on as it is, when the system has no transparent huge
+ * pages, glibc is older than 2.35, GLIBC_TUNABLES already says how malloc takes
+ * huge pages (also after the restart), or the restart fails.
+ *
+ * Why: a tool writes its arrays once, into memory that is new to the process, and
+ * each 4 KiB page of it costs a page fault the first time it is written; on a
+ * virtual machine a fault can cost 10 microseconds, a 2 MiB huge page about the
+ * same for 512 times the memory. glibc reads its tunables only when a program
+ * starts, hence the restart, before the tool prints anything; it takes about as long
+ * as the start of a tool (a few milliseconds). */
+void
+restartWithHugePageMalloc (char** argv);
+
+} // namespace tda
+} // namespace pcl

@@ -1,0 +1,60 @@
+#include <pcl/tda/apps/huge_page_malloc.h>
+
+#include <gnu/libc-version.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+namespace pcl {
+namespace tda {
+
+namespace {
+
+/** Whether the kernel gives transparent huge pages to memory that asks for them
+ * ("always" or "madvise" mode). */
+bool
+transparentHugePagesAvailable ()
+{
+  std::ifstream file ("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string modes;
+  return std::getline (file, modes) && modes.find ("[never]") == std::string::npos;
+}
+
+/** Whether glibc knows the tunable (2.35 and later). */
+bool
+glibcHasHugePageMalloc ()
+{
+  int major = 0, minor = 0;
+  return std::sscanf (gnu_get_libc_version(), "%d.%d", &major, &minor) == 2 &&
+         (major > 2 || (major == 2 && minor >= 35));
+}
+
+} // namespace
+
+void
+restartWithHugePageMalloc (char** argv)
+{
+  const char* tunables = std::getenv ("GLIBC_TUNABLES");
+  const bool had_tunables = tunables != nullptr;
+  const std::string current = had_tunables ? tunables : "";
+  if (current.find ("glibc.malloc.hugetlb") != std::string::npos ||
+      !glibcHasHugePageMalloc() || !transparentHugePagesAvailable())
+    return;
+  const std::string wanted = current.empty() ? HUGE_PAGE_MALLOC_TUNABLE
+                                             : current + ":" + HUGE_PAGE_MALLOC_TUNABLE;
+  if (setenv ("GLIBC_TUNABLES", wanted.c_str(), 1) != 0)
+    return;
+  std::fflush (nullptr);
+  execv ("/proc/self/exe", argv);
+  // Not restarted: the tool goes on as it is, with the environment it was given.
+  if (had_tunables)
+    setenv ("GLIBC_TUNABLES", current.c_str(), 1);
+  else
+    unsetenv ("GLIBC_TUNABLES");
+}
+
+} // namespace tda
+} // namespace pcl
