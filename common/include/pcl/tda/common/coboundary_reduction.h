@@ -14,10 +14,12 @@ namespace pcl {
 namespace tda {
 
 /** \brief The columns a coboundary reduction keeps for later additions, one after
- * another in one array: the reduced column of a paired edge, or the coboundary of
- * an apparent pair's edge once some column needs it. A column is stored once and
- * never changes, so one array and an index per edge replace a map of vectors (tens
- * of thousands of allocations on a real scan). \a Key names a triangle. */
+ * another in a few large blocks: the reduced column of a paired edge, or the
+ * coboundary of an apparent pair's edge once some column needs it. A column is
+ * stored once and never changes, so blocks and an index per edge replace a map of
+ * vectors (tens of thousands of allocations on a real scan); a block is never moved
+ * (a full one is followed by a new one), so that storing costs no copy of the columns
+ * stored before. \a Key names a triangle. */
 template <typename Key>
 class StoredColumns {
 public:
@@ -34,25 +36,32 @@ public:
   void
   store (SimplexIndex edge, const std::vector<Key>& column)
   {
-    slot_[edge] = static_cast<std::uint32_t> (bounds_.size() - 1);
-    entries_.insert (entries_.end(), column.begin(), column.end());
-    bounds_.push_back (entries_.size());
+    if (blocks_.empty() ||
+        blocks_.back().capacity() - blocks_.back().size() < column.size()) {
+      blocks_.emplace_back();
+      blocks_.back().reserve (std::max (BLOCK_KEYS, column.size()));
+    }
+    std::vector<Key>& block = blocks_.back();
+    const Key* first = block.data() + block.size();
+    block.insert (block.end(), column.begin(), column.end());
+    slot_[edge] = static_cast<std::uint32_t> (columns_.size());
+    columns_.emplace_back (first, first + column.size());
   }
 
   /** The stored column of \a edge as [first, last). */
   std::pair<const Key*, const Key*>
   column (SimplexIndex edge) const
   {
-    const std::uint32_t slot = slot_[edge];
-    return {entries_.data() + bounds_[slot], entries_.data() + bounds_[slot + 1]};
+    return columns_[slot_[edge]];
   }
 
 private:
   static constexpr std::uint32_t NONE = 0xffffffffu;
+  /** Keys per block: 2 MiB, a huge page where malloc takes them. */
+  static constexpr std::size_t BLOCK_KEYS = (std::size_t{2} << 20) / sizeof (Key);
   std::vector<std::uint32_t> slot_; // per edge: its column's slot, or NONE
-  // Column k is entries_[bounds_[k], bounds_[k + 1]).
-  std::vector<std::size_t> bounds_ = {0};
-  std::vector<Key> entries_;
+  std::vector<std::pair<const Key*, const Key*>> columns_; // per slot
+  std::vector<std::vector<Key>> blocks_;
 };
 
 /** \brief Persistent cohomology of the edges (H1): the reduction loop of the
