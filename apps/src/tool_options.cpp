@@ -45,6 +45,15 @@ refuseValue (const std::string& name,
                                  << "'.");
 }
 
+/** Whether strtod or strtol, which skip leading spaces and stop at the first
+ * character they cannot read, read all of \a text: a whole number has neither. */
+bool
+readWhole (const std::string& text, const char* end)
+{
+  return !text.empty() && !std::isspace (static_cast<unsigned char> (text[0])) &&
+         end == text.c_str() + text.size();
+}
+
 } // namespace
 
 void
@@ -77,32 +86,45 @@ ToolCommandLine::addSwitch (const std::string& name, bool& value)
   options_[name] = Option{&value, {}, 0, 0, false};
 }
 
+std::optional<double>
+parseWholeNumber (const std::string& text)
+{
+  char* end = nullptr;
+  const double value = std::strtod (text.c_str(), &end);
+  if (!readWhole (text, end) || !std::isfinite (value))
+    return std::nullopt;
+  return value;
+}
+
+std::optional<long>
+parseWholeInteger (const std::string& text)
+{
+  char* end = nullptr;
+  errno = 0;
+  const long value = std::strtol (text.c_str(), &end, 10);
+  if (!readWhole (text, end) || errno == ERANGE)
+    return std::nullopt;
+  return value;
+}
+
 void
 ToolCommandLine::store (const std::string& name,
                         const Option& option,
                         const std::string& text) const
 {
-  char* end = nullptr;
-  errno = 0;
-  // strtod and strtol skip leading spaces and stop at the first character they
-  // cannot read: a whole number has neither.
-  const auto whole = [&text, &end] {
-    return !text.empty() && !std::isspace (static_cast<unsigned char> (text[0])) &&
-           end == text.c_str() + text.size();
-  };
   if (auto* number = std::get_if<double*> (&option.value)) {
-    const double value = std::strtod (text.c_str(), &end);
+    const std::optional<double> value = parseWholeNumber (text);
     const NumberRange& range = option.range;
-    if (!whole() || !std::isfinite (value) || value < range.minimum ||
-        (range.above_minimum && value == range.minimum) || value > range.maximum)
+    if (!value || *value < range.minimum ||
+        (range.above_minimum && *value == range.minimum) || *value > range.maximum)
       refuseValue (name, describe (range), text);
-    **number = value;
+    **number = *value;
   }
   else if (auto* integer = std::get_if<long*> (&option.value)) {
-    const long value = std::strtol (text.c_str(), &end, 10);
-    if (!whole() || errno == ERANGE || value < option.minimum || value > option.maximum)
+    const std::optional<long> value = parseWholeInteger (text);
+    if (!value || *value < option.minimum || *value > option.maximum)
       refuseValue (name, describe (option.minimum, option.maximum), text);
-    **integer = value;
+    **integer = *value;
   }
   else {
     if (text.empty() || text[0] == '-')

@@ -7,7 +7,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,16 +37,15 @@ takeOptionalArgument (const std::vector<std::string>& arguments,
 inline double
 positiveNumber (const std::string& text, const char* what, bool integer)
 {
-  char* end = nullptr;
-  const double value = std::strtod (text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !(value > 0.0) || !std::isfinite (value) ||
-      (integer && (value != std::floor (value) || value > 1000.0)))
+  const std::optional<double> value = parseWholeNumber (text);
+  if (!value || !(*value > 0.0) ||
+      (integer && (*value != std::floor (*value) || *value > 1000.0)))
     PCL_THROW_EXCEPTION (
         pcl::BadArgumentException,
         "The " << what << " must be "
                << (integer ? "an integer from 1 to 1000" : "a positive number")
                << ", not '" << text << "'.");
-  return value;
+  return *value;
 }
 
 /** \brief The command line of a benchmark program: with -h, prints the usage to

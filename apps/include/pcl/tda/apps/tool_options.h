@@ -2,6 +2,7 @@
 
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <variant>
@@ -88,6 +89,16 @@ private:
   std::map<std::string, Option> options_;
   std::set<std::string> given_;
 };
+
+/** \brief The finite number \a text spells as a whole (std::strtod: no leading space,
+ * nothing after it), or none. */
+std::optional<double>
+parseWholeNumber (const std::string& text);
+
+/** \brief The integer \a text spells as a whole (std::strtol, base 10: no leading
+ * space, nothing after it, within the range of long), or none. */
+std::optional<long>
+parseWholeInteger (const std::string& text);
 
 /** \brief True when one of the arguments asks for help ("-h" or "--help"): a tool
  * then prints its help only and exits with 0. */
