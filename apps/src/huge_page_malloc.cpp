@@ -34,6 +34,12 @@ glibcHasHugePageMalloc ()
 
 } // namespace
 
+bool
+hugePageMallocAvailable ()
+{
+  return glibcHasHugePageMalloc() && transparentHugePagesAvailable();
+}
+
 void
 restartWithHugePageMalloc (char** argv)
 {
@@ -41,7 +47,7 @@ restartWithHugePageMalloc (char** argv)
   const bool had_tunables = tunables != nullptr;
   const std::string current = had_tunables ? tunables : "";
   if (current.find ("glibc.malloc.hugetlb") != std::string::npos ||
-      !glibcHasHugePageMalloc() || !transparentHugePagesAvailable())
+      !hugePageMallocAvailable())
     return;
   const std::string wanted = current.empty() ? HUGE_PAGE_MALLOC_TUNABLE
                                              : current + ":" + HUGE_PAGE_MALLOC_TUNABLE;

@@ -7,10 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "tool_runner.h"
-#include <gnu/libc-version.h>
 
-#include <cstdio>
-#include <fstream>
 #include <string>
 
 using pcl::tda::test::run;
@@ -18,19 +15,6 @@ using pcl::tda::test::run;
 namespace {
 
 const std::string PROBE = std::string (PCL_TDA_BIN_DIR) + "/huge_page_malloc_probe";
-
-/** Whether this system can give malloc huge pages: glibc 2.35 or later, and
- * transparent huge pages not off. */
-bool
-hugePagesPossible ()
-{
-  int major = 0, minor = 0;
-  std::sscanf (gnu_get_libc_version(), "%d.%d", &major, &minor);
-  std::ifstream file ("/sys/kernel/mm/transparent_hugepage/enabled");
-  std::string modes;
-  return (major > 2 || (major == 2 && minor >= 35)) && std::getline (file, modes) &&
-         modes.find ("[never]") == std::string::npos;
-}
 
 /** The probe's output with \a environment (e.g. "GLIBC_TUNABLES=x") and its
  * arguments 'a b', '' and 'c'. */
@@ -49,14 +33,14 @@ const std::string ARGUMENTS = "[a b]\n[]\n[c]\n";
 
 TEST (HugePageMalloc, RestartsOnceWithTheTunableAndTheSameArguments)
 {
-  if (!hugePagesPossible())
+  if (!pcl::tda::hugePageMallocAvailable())
     GTEST_SKIP() << "no transparent huge pages or glibc older than 2.35 here";
   EXPECT_EQ (probe (""), "starts 2\ntunables glibc.malloc.hugetlb=1\n" + ARGUMENTS);
 }
 
 TEST (HugePageMalloc, AddsTheTunableToOtherTunables)
 {
-  if (!hugePagesPossible())
+  if (!pcl::tda::hugePageMallocAvailable())
     GTEST_SKIP() << "no transparent huge pages or glibc older than 2.35 here";
   EXPECT_EQ (probe ("GLIBC_TUNABLES=glibc.malloc.arena_max=2"),
              "starts 2\ntunables glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1\n" +

@@ -7,11 +7,17 @@ namespace tda {
  * system with transparent huge pages (glibc 2.35 and later). */
 constexpr const char* HUGE_PAGE_MALLOC_TUNABLE = "glibc.malloc.hugetlb=1";
 
+/** \brief Whether malloc can be given huge pages here: glibc 2.35 or later (which
+ * knows HUGE_PAGE_MALLOC_TUNABLE) and transparent huge pages not off ("always" or
+ * "madvise" mode). */
+bool
+hugePageMallocAvailable ();
+
 /** \brief Starts the tool again, as the same program with the same arguments
  * (execv() of /proc/self/exe), with HUGE_PAGE_MALLOC_TUNABLE added to GLIBC_TUNABLES;
- * returns, and the tool goes on as it is, when the system has no transparent huge
- * pages, glibc is older than 2.35, GLIBC_TUNABLES already says how malloc takes
- * huge pages (also after the restart), or the restart fails.
+ * returns, and the tool goes on as it is, when !hugePageMallocAvailable(),
+ * GLIBC_TUNABLES already says how malloc takes huge pages (also after the restart), or
+ * the restart fails.
  *
  * Why: a tool writes its arrays once, into memory that is new to the process, and
  * each 4 KiB page of it costs a page fault the first time it is written; on a
