@@ -54,9 +54,10 @@ printHelp (const char* program)
               pcl::tda::SURFACE_SPACING_NEIGHBORS);
   print_info ("    -min-hole H = smallest hole radius: the largest empty disk inside "
               "a rim must have\n                  radius H or more (default: %g "
-              "times the radius); narrower\n                  gaps are taken for "
-              "gaps of the sampling\n",
-              Estimation::DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS);
+              "times the surface spacing, or\n                  the local spacing "
+              "around the rim where the scan is\n                  sparser); "
+              "narrower gaps are taken for gaps of the sampling\n",
+              Estimation::DEFAULT_MIN_HOLE_RADIUS_PER_SPACING);
   print_info ("    -max-cycle N = report only rims of at most N points (default: no "
               "limit)\n");
   print_info ("    -fill F.pcd = also write the cloud with its holes filled: the "

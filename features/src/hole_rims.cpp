@@ -2,6 +2,7 @@
 #include <pcl/tda/features/distance_grid.h>
 #include <pcl/tda/features/hole_rims.h>
 #include <pcl/tda/features/projected_polygon.h>
+#include <pcl/tda/search/point_spacing.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,6 +26,15 @@ surfaceNormal (SimplexIndex v,
   return plane.normal();
 }
 
+/** The median of \a values (not empty), reordering them. */
+double
+median (std::vector<double>& values)
+{
+  const auto middle = values.begin() + static_cast<std::ptrdiff_t> (values.size() / 2);
+  std::nth_element (values.begin(), middle, values.end());
+  return *middle;
+}
+
 double
 medianTilt (const std::vector<SimplexIndex>& rim,
             const Eigen::Vector3f& rim_normal,
@@ -38,9 +48,21 @@ medianTilt (const std::vector<SimplexIndex>& rim,
         1.0f, std::abs (surfaceNormal (v, positions, adjacency).dot (rim_normal)));
     tilts.push_back (std::acos (cosine) * 180.0 / M_PI);
   }
-  const auto middle = tilts.begin() + static_cast<std::ptrdiff_t> (tilts.size() / 2);
-  std::nth_element (tilts.begin(), middle, tilts.end());
-  return *middle;
+  return median (tilts);
+}
+
+/** The median of \a sparseness over the points of \a rim; 1 when it is empty. */
+double
+medianSparseness (const std::vector<SimplexIndex>& rim,
+                  const std::vector<double>& sparseness)
+{
+  if (sparseness.empty())
+    return 1.0;
+  std::vector<double> values;
+  values.reserve (rim.size());
+  for (const SimplexIndex v : rim)
+    values.push_back (sparseness[v]);
+  return median (values);
 }
 
 } // namespace
@@ -51,7 +73,8 @@ holeRims (const std::vector<MinimalCycle>& cycles,
           const EdgeAdjacency& adjacency,
           double max_tilt_degrees,
           std::size_t max_cycle_length,
-          double min_clearance)
+          double min_clearance,
+          const std::vector<double>& sparseness)
 {
   struct Found {
     const MinimalCycle* cycle;
@@ -74,7 +97,7 @@ holeRims (const std::vector<MinimalCycle>& cycles,
   for (const MinimalCycle& cycle : cycles) {
     const std::vector<SimplexIndex>& rim = cycle.vertices;
     if (rim.size() < 3 || (max_cycle_length > 0 && rim.size() > max_cycle_length) ||
-        cycle.clearance < min_clearance)
+        cycle.clearance < min_clearance * medianSparseness (rim, sparseness))
       continue;
     const ProjectedPolygon polygon (positions, rim);
     HoleRim hole;
@@ -119,6 +142,24 @@ holeRims (const std::vector<MinimalCycle>& cycles,
   for (Found& k : kept)
     holes.push_back (std::move (k.hole));
   return holes;
+}
+
+std::vector<double>
+cycleSparseness (const std::vector<MinimalCycle>& cycles,
+                 const std::vector<Point3d>& positions,
+                 double spacing,
+                 unsigned int threads)
+{
+  std::vector<std::uint32_t> vertices;
+  for (const MinimalCycle& cycle : cycles)
+    vertices.insert (vertices.end(), cycle.vertices.begin(), cycle.vertices.end());
+  std::sort (vertices.begin(), vertices.end());
+  vertices.erase (std::unique (vertices.begin(), vertices.end()), vertices.end());
+  const std::vector<double> local = localSurfaceSpacings (positions, vertices, threads);
+  std::vector<double> sparseness (positions.size(), 1.0);
+  for (std::size_t i = 0; i < vertices.size(); ++i)
+    sparseness[vertices[i]] = std::max (1.0, local[i] / spacing);
+  return sparseness;
 }
 
 std::vector<std::uint32_t>

@@ -1,8 +1,40 @@
 #include <pcl/tda/search/nearest_neighbors.h>
 #include <pcl/tda/search/point_spacing.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace pcl {
 namespace tda {
+
+namespace {
+
+/** Per query of \a queries, its distance to the \a k -th nearest point of \a tree at a
+ * positive distance (so that duplicates of the query do not count), or 0 where
+ * fewer than k such points exist among the nearest k + 8. */
+std::vector<double>
+kthNeighborDistances (const NearestNeighbors& tree,
+                      std::vector<float> queries,
+                      std::size_t k,
+                      unsigned int threads)
+{
+  const std::size_t num_queries = queries.size() / 3;
+  const std::size_t wanted = std::min (k + 8, tree.size());
+  std::vector<std::uint32_t> neighbors;
+  std::vector<float> squared_distances;
+  tree.search (std::move (queries), wanted, threads, neighbors, squared_distances);
+  std::vector<double> distances (num_queries, 0.0);
+  for (std::size_t q = 0; q < num_queries; ++q) {
+    const auto row = squared_distances.begin() + q * wanted;
+    const auto first =
+        std::find_if (row, row + wanted, [] (float d) { return d > 0.0f; });
+    if (static_cast<std::size_t> (row + wanted - first) >= k)
+      distances[q] = std::sqrt (static_cast<double> (*(first + (k - 1))));
+  }
+  return distances;
+}
+
+} // namespace
 
 double
 sortedPointSpacing (std::vector<float> xyz,
@@ -18,21 +50,9 @@ sortedPointSpacing (std::vector<float> xyz,
   std::vector<float> samples;
   for (std::size_t i = 0; i < num_points; i += stride)
     samples.insert (samples.end(), &xyz[3 * i], &xyz[3 * i] + 3);
-  const std::size_t num_samples = samples.size() / 3;
-  // Enough neighbours to step over a few duplicates of the point.
-  const std::size_t wanted = std::min (k + 8, num_points);
-  std::vector<std::uint32_t> neighbors;
-  std::vector<float> squared_distances;
-  NearestNeighbors (std::move (xyz))
-      .search (std::move (samples), wanted, threads, neighbors, squared_distances);
-  std::vector<double> spacings;
-  for (std::size_t q = 0; q < num_samples; ++q) {
-    const auto row = squared_distances.begin() + q * wanted;
-    const auto first =
-        std::find_if (row, row + wanted, [] (float d) { return d > 0.0f; });
-    if (static_cast<std::size_t> (row + wanted - first) >= k)
-      spacings.push_back (std::sqrt (static_cast<double> (*(first + (k - 1)))));
-  }
+  std::vector<double> spacings = kthNeighborDistances (
+      NearestNeighbors (std::move (xyz)), std::move (samples), k, threads);
+  spacings.erase (std::remove (spacings.begin(), spacings.end(), 0.0), spacings.end());
   if (spacings.empty())
     return 0.0;
   const auto rank = static_cast<std::size_t> (std::max (
@@ -41,6 +61,25 @@ sortedPointSpacing (std::vector<float> xyz,
                     spacings.begin() + std::min (rank, spacings.size() - 1),
                     spacings.end());
   return spacings[std::min (rank, spacings.size() - 1)];
+}
+
+std::vector<double>
+localSurfaceSpacings (const std::vector<Point3d>& points,
+                      const std::vector<std::uint32_t>& queries,
+                      unsigned int threads)
+{
+  if (points.size() < 2)
+    return std::vector<double> (queries.size(), 0.0);
+  std::vector<double> spacings =
+      kthNeighborDistances (NearestNeighbors (floatCoordinates (points)),
+                            floatCoordinates (points, queries),
+                            SURFACE_SPACING_NEIGHBORS,
+                            threads);
+  const double per_distance =
+      std::sqrt (M_PI / static_cast<double> (SURFACE_SPACING_NEIGHBORS));
+  for (double& spacing : spacings)
+    spacing *= per_distance;
+  return spacings;
 }
 
 } // namespace tda

@@ -255,8 +255,11 @@ main (int argc, char** argv)
                "recall (centred, around) | rims reported | time (s) "
                "|\n|---|---|---|---|---|---|---|---|---|---|\n");
   std::size_t all_cut = 0, all_centred = 0, all_around = 0;
-  for (const std::string name :
-       {"milk.pcd", "rops_cloud.pcd", "car6.pcd", "kinect_frame.pcd"}) {
+  for (const std::string name : {"milk.pcd",
+                                 "rops_cloud.pcd",
+                                 "car6.pcd",
+                                 "kinect_frame.pcd",
+                                 "table_scene_mug_stereo_textured.pcd"}) {
     Cloud::Ptr raw (new Cloud), scan (new Cloud);
     if (pcl::io::loadPCDFile (options.data + "/" + name, *raw) < 0) {
       std::printf ("| %s | (not found in %s) |\n", name.c_str(), options.data.c_str());

@@ -142,8 +142,12 @@ TEST (HoleBoundaryEstimation, SearchesTheClassesAliveAtThePersistenceRadius)
     estimation.compute (flags);
     const double r = estimation.getUsedRadius();
     const double persistence_radius = estimation.getUsedPersistenceRadius();
-    EXPECT_DOUBLE_EQ (persistence_radius,
-                      Estimation::PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS * r);
+    // The automatic smallest hole radius (2 spacings) is below r (2.2 spacings).
+    const double min_hole_radius = Estimation::DEFAULT_MIN_HOLE_RADIUS_PER_SPACING /
+                                   Estimation::AUTO_RADIUS_PER_SPACING * r;
+    EXPECT_NEAR (persistence_radius,
+                 Estimation::PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS * min_hole_radius,
+                 1e-12 * r);
 
     pcl::tda::VietorisRipsBuilder<pcl::PointXYZ> builder;
     builder.setInputCloud (cloud);
@@ -170,9 +174,11 @@ TEST (HoleBoundaryEstimation, SearchesTheClassesAliveAtThePersistenceRadius)
     EXPECT_EQ (counts.edges, edges);
     EXPECT_EQ (counts.open_classes, open);
     EXPECT_EQ (counts.persistent_classes, persistent);
-    // Gaps of the sampling fill in before the persistence radius.
-    EXPECT_GT (open, 10 * persistent);
-    EXPECT_GE (persistent, 3u);
+    // Gaps of the sampling fill in before the persistence radius: the classes alive
+    // there are the surface's first homology, 3 for the plane with its 3 holes, and
+    // for the torus its 2 loops and 2 of its 3 holes (the third is their sum).
+    EXPECT_GT (open, persistent);
+    EXPECT_EQ (persistent, kind == HoleSurfaceKind::PLANE ? 3u : 4u);
   }
 }
 
@@ -195,13 +201,57 @@ TEST (HoleBoundaryEstimation,
         estimation.getUsedPersistenceRadius(),
         std::max (r, factor * std::min (min_hole_radius_per_radius, 1.0) * r))
         << "smallest hole radius " << min_hole_radius_per_radius << " r";
-    // The generated holes (radius 3 h and more) are wider than 1.25 r = 2 h, and no
-    // gap of the sampling is as wide as r.
+    // The generated holes (radius 3 h and more) are wider than 1.25 r = 2.75 h, and
+    // no gap of the sampling is as wide as r.
     if (min_hole_radius_per_radius >= 1.0 && min_hole_radius_per_radius <= 1.25) {
       EXPECT_EQ (estimation.getHoles().size(), 3u)
           << "smallest hole radius " << min_hole_radius_per_radius << " r";
     }
   }
+}
+
+TEST (HoleBoundaryEstimation, SmallestHoleRadiusFollowsTheLocalSpacing)
+{
+  // A plane sampled on two grids, steps a and 1.5 a. A hole of radius 5 a in the
+  // fine part, and a gap of the coarse sampling (its 3 x 3 points removed: an empty
+  // disk of radius 3 a, 2 of its spacings) that is wider than 2 spacings of the
+  // whole cloud (most of its points are on the fine grid).
+  const float a = 0.01f, coarse = 1.5f * a;
+  const Eigen::Vector3f hole (0.2f, 0.2f, 0.0f),
+      gap (0.4f + 10 * coarse, 13 * coarse, 0.0f);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j)
+      if ((Eigen::Vector3f (i * a, j * a, 0.0f) - hole).norm() > 5.0f * a)
+        cloud->push_back (pcl::PointXYZ (i * a, j * a, 0.0f));
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 27; ++j)
+      if ((Eigen::Vector3f (0.4f + i * coarse, j * coarse, 0.0f) - gap).norm() >
+          1.5f * coarse)
+        cloud->push_back (pcl::PointXYZ (0.4f + i * coarse, j * coarse, 0.0f));
+  Estimation estimation;
+  estimation.setInputCloud (cloud);
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  ASSERT_EQ (estimation.getHoles().size(), 1u);
+  EXPECT_LT ((estimation.getHoles()[0].centroid - hole).norm(), 0.5f * a);
+  // The same smallest hole radius in the spacing of the whole cloud, with no local
+  // spacing: the gap of the coarse part is a hole too.
+  const double spacing = pcl::tda::surfaceSpacing (*cloud);
+  EXPECT_NEAR (spacing, std::sqrt (2.0 * M_PI / 6.0) * a, 1e-3 * a);
+  estimation.setMinHoleRadius (Estimation::DEFAULT_MIN_HOLE_RADIUS_PER_SPACING *
+                               spacing);
+  estimation.compute (flags);
+  ASSERT_EQ (estimation.getHoles().size(), 2u);
+  const auto near = [&] (const Eigen::Vector3f& centre) {
+    return std::any_of (estimation.getHoles().begin(),
+                        estimation.getHoles().end(),
+                        [&] (const pcl::tda::HoleRim& rim) {
+                          return (rim.centroid - centre).norm() < 0.5f * a;
+                        });
+  };
+  EXPECT_TRUE (near (hole));
+  EXPECT_TRUE (near (gap));
 }
 
 TEST (HoleBoundaryEstimation, FlagsTheRimBandOfTheLabels)

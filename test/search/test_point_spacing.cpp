@@ -1,6 +1,7 @@
 /** pointSpacing(): known values on regular samplings, non-finite points and
  * duplicates skipped, and the same value for any input order, also when only a
- * sample of the points is measured. */
+ * sample of the points is measured. localSurfaceSpacings(): the closed form on a
+ * grid sampled at two densities. */
 #include <pcl/tda/search/point_spacing.h>
 #include <pcl/point_types.h>
 
@@ -10,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <vector>
 
 namespace {
 
@@ -71,6 +73,35 @@ TEST (PointSpacing, IndependentOfInputOrder)
             << "k " << k << " quantile " << quantile << " seed " << seed;
       }
     }
+}
+
+TEST (LocalSurfaceSpacings, FollowTheDensityAroundEachPoint)
+{
+  // Closed form: inside a square grid of step a, the 6th nearest point is at
+  // sqrt(2) a, so the local spacing is sqrt(2) a sqrt(pi / 6), as surfaceSpacing()
+  // gives for the grid as a whole. Two grids side by side, of steps 1 cm and 2 cm.
+  const float fine = 0.01f, coarse = 0.02f;
+  std::vector<pcl::tda::Point3d> points;
+  for (int i = 0; i < 40; ++i)
+    for (int j = 0; j < 40; ++j)
+      points.push_back ({i * fine, j * fine, 0.0});
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 20; ++j)
+      points.push_back ({1.0 + i * coarse, j * coarse, 0.0});
+  points.push_back (points.front()); // a duplicate does not count as a neighbour
+  const std::uint32_t fine_inside = 20 * 40 + 20, coarse_inside = 1600 + 10 * 20 + 10;
+  const std::vector<double> spacings =
+      pcl::tda::localSurfaceSpacings (points, {fine_inside, coarse_inside, 0});
+  ASSERT_EQ (spacings.size(), 3u);
+  const double per_step = std::sqrt (2.0) * std::sqrt (M_PI / 6.0);
+  EXPECT_NEAR (spacings[0], per_step * fine, 1e-6);
+  EXPECT_NEAR (spacings[1], per_step * coarse, 1e-6);
+  // A corner point's 6th nearest point (its duplicate skipped) is at sqrt(5) steps.
+  EXPECT_NEAR (spacings[2], std::sqrt (5.0) * fine * std::sqrt (M_PI / 6.0), 1e-6);
+  Cloud fine_grid = grid (40, fine);
+  EXPECT_NEAR (pcl::tda::surfaceSpacing (fine_grid), spacings[0], 1e-6);
+  EXPECT_EQ (pcl::tda::localSurfaceSpacings ({points.front()}, {0}),
+             std::vector<double> (1, 0.0));
 }
 
 } // namespace

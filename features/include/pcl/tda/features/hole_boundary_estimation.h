@@ -60,20 +60,24 @@ public:
   using ConstPtr = shared_ptr<const HoleBoundaryEstimation<PointInT, PointOutT>>;
   using PointCloudOut = typename pcl::Feature<PointInT, PointOutT>::PointCloudOut;
 
-  /** \brief The automatic radius in units of the surface spacing (see setRadius()). */
-  static constexpr double AUTO_RADIUS_PER_SPACING = 1.6;
-  /** \brief The default smallest hole radius, in units of the radius (see
-   * setMinHoleRadius()): 2 spacings at the automatic radius, below the 3 spacings of
-   * the smallest generated holes, above most empty disks between the sparse scan
-   * lines of real scans (with 1.0, the real scans with holes cut in gave 20-45 %
-   * more rims and the same holes; the generated surfaces one hole fewer). */
-  static constexpr double DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS = 1.25;
+  /** \brief The automatic radius in units of the surface spacing (see setRadius()):
+   * a little above the radius at which the neighbours of 90 % of the points of a
+   * near-uniform sampling surround them (no angular gap over 90 degrees: 1.9-2.0
+   * spacings on the generated surfaces), so that real scans, sampled denser along
+   * their scan lines than across them, are a surface at it too. */
+  static constexpr double AUTO_RADIUS_PER_SPACING = 2.2;
+  /** \brief The default smallest hole radius, in units of the spacing (see
+   * setMinHoleRadius()): below the 3 spacings of the smallest generated holes, and
+   * measured in the local spacing around each rim (localSurfaceSpacings()), where
+   * a real scan is sampled more sparsely than on average, so that the gaps of its
+   * sparse parts are not holes. */
+  static constexpr double DEFAULT_MIN_HOLE_RADIUS_PER_SPACING = 2.0;
   /** \brief The persistence radius in units of the smallest hole radius, counted
    * up to the radius r: the classes of VR_r searched for holes are those still
    * alive at this many times the smaller of the two (or at r, when larger). A round
    * hole of empty radius rho lives until about sqrt(3) rho, less on a noisy rim, so
-   * one at least r wide is still open at 1.3 r; most gaps of the sampling die
-   * before. */
+   * one at least the smallest hole radius wide is still open at 1.3 times it; most
+   * gaps of the sampling die before. */
   static constexpr double PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS = 1.3;
   /** \brief The automatic rim band width in units of the surface spacing. */
   static constexpr double AUTO_BAND_PER_SPACING = 1.5;
@@ -128,11 +132,13 @@ public:
 
   /** \brief Sets the smallest radius of a hole: the radius of the largest empty
    * disk inside its rim must be at least this. 0 (the default):
-   * DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS times the radius of the complex. The gaps of
-   * the sampling that the complex's triangles leave open are narrower (measured on
-   * generated surfaces at every noise level: none reached it). The filtration is
-   * built up to PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS times the smaller of it and
-   * the radius (at least to the radius). */
+   * DEFAULT_MIN_HOLE_RADIUS_PER_SPACING times the surface spacing, and as many times
+   * the local spacing around the rim (the median over its points of
+   * localSurfaceSpacings()) where that is larger. The gaps of the sampling that the
+   * complex's triangles leave open are narrower (measured on generated surfaces at
+   * every noise level, and on real scans relative to their local spacing). The
+   * filtration is built up to PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS times the
+   * smaller of it and the radius (at least to the radius). */
   void
   setMinHoleRadius (double radius)
   {

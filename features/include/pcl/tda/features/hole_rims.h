@@ -47,7 +47,9 @@ struct HoleRim {
  * about 90 degrees, and are not holes.
  *
  * A hole must also be wider than the gaps of the sampling: its empty disk has a
- * radius (MinimalCycle::clearance) of at least \a min_clearance. Cycles around
+ * radius (MinimalCycle::clearance) of at least \a min_clearance, times the median
+ * over the rim's points of \a sparseness where it is given: where the surface is
+ * sampled more sparsely, its gaps are wider by as much. Cycles around
  * the same empty region (the centre of one's empty disk inside the other's rim)
  * give one hole, with the shortest of their rims.
  *
@@ -57,14 +59,31 @@ struct HoleRim {
  * \param[in] adjacency the neighbours of every vertex (the edges of the complex)
  * \param[in] max_tilt_degrees the largest median tilt of a hole
  * \param[in] max_cycle_length the largest number of rim points (0: no limit)
- * \param[in] min_clearance the smallest radius of a hole's empty disk */
+ * \param[in] min_clearance the smallest radius of a hole's empty disk
+ * \param[in] sparseness per vertex, how many times sparser than the surface spacing
+ * the sampling around it is (at least 1; localSurfaceSpacings() over the spacing),
+ * for every vertex of \a cycles; empty: 1 everywhere */
 std::vector<HoleRim>
 holeRims (const std::vector<MinimalCycle>& cycles,
           const std::vector<Point3d>& positions,
           const EdgeAdjacency& adjacency,
           double max_tilt_degrees,
           std::size_t max_cycle_length,
-          double min_clearance);
+          double min_clearance,
+          const std::vector<double>& sparseness = {});
+
+/** \brief The sparseness of the sampling around the vertices of \a cycles, as
+ * holeRims() takes it: per vertex of a cycle, its local surface spacing
+ * (localSurfaceSpacings()) over \a spacing, at least 1; 1 for the other vertices.
+ * \param[in] cycles the minimal 1-cycles
+ * \param[in] positions the position of every vertex
+ * \param[in] spacing the surface spacing of the whole cloud (surfaceSpacing())
+ * \param[in] threads number of threads (0: OpenMP's default) */
+std::vector<double>
+cycleSparseness (const std::vector<MinimalCycle>& cycles,
+                 const std::vector<Point3d>& positions,
+                 double spacing,
+                 unsigned int threads = 0);
 
 /** \brief The rim band: per vertex, the number (1, 2, ...) of the hole of \a holes
  * whose edge it lies within \a band_width of (the first such hole), else 0. This is

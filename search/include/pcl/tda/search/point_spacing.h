@@ -1,12 +1,14 @@
 #pragma once
 
 #include <pcl/common/point_tests.h>
+#include <pcl/tda/common/point3d.h>
 #include <pcl/point_cloud.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace pcl {
@@ -77,6 +79,18 @@ surfaceSpacing (const pcl::PointCloud<PointT>& cloud,
   return pointSpacing (cloud, 0.5, SURFACE_SPACING_NEIGHBORS, max_samples, threads) *
          std::sqrt (M_PI / static_cast<double> (SURFACE_SPACING_NEIGHBORS));
 }
+
+/** \brief The surface spacing around given points, the local counterpart of
+ * surfaceSpacing(): for each of \a queries (indices into \a points), d_k sqrt(pi / k)
+ * with d_k its distance to the k-th nearest point of \a points at a positive distance
+ * (k = SURFACE_SPACING_NEIGHBORS); 0 where there are fewer such points. Where a
+ * surface is sampled more sparsely (far from a depth camera, across the scan lines
+ * of a laser) it is larger than the spacing of the whole cloud. Searched with
+ * \a threads OpenMP threads (0: OpenMP's default). */
+std::vector<double>
+localSurfaceSpacings (const std::vector<Point3d>& points,
+                      const std::vector<std::uint32_t>& queries,
+                      unsigned int threads = 0);
 
 } // namespace tda
 } // namespace pcl

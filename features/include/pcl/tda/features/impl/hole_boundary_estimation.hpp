@@ -70,7 +70,7 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
 
   const double min_clearance = min_hole_radius_ > 0.0
                                    ? min_hole_radius_
-                                   : DEFAULT_MIN_HOLE_RADIUS_PER_RADIUS * used_radius_;
+                                   : DEFAULT_MIN_HOLE_RADIUS_PER_SPACING * spacing;
   used_persistence_radius_ = std::max (used_radius_,
                                        PERSISTENCE_RADIUS_PER_MIN_HOLE_RADIUS *
                                            std::min (min_clearance, used_radius_));
@@ -160,18 +160,23 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
       borderPolygons (positions, adjacency, used_radius_, min_clearance, threads_);
   search_counts_.border_polygons = borders.size();
   std::move (borders.begin(), borders.end(), std::back_inserter (initial));
-  holes_ = holeRims (minimalCycles (complex_,
-                                    initial,
-                                    positions,
-                                    adjacency,
-                                    min_clearance,
-                                    threads_,
-                                    progress_ ? quarters (2, 2) : ProgressCallback{}),
+  const std::vector<MinimalCycle> cycles =
+      minimalCycles (complex_,
+                     initial,
+                     positions,
+                     adjacency,
+                     min_clearance,
+                     threads_,
+                     progress_ ? quarters (2, 2) : ProgressCallback{});
+  holes_ = holeRims (cycles,
                      positions,
                      adjacency,
                      max_tilt_degrees_,
                      max_cycle_length_,
-                     min_clearance);
+                     min_clearance,
+                     min_hole_radius_ > 0.0
+                         ? std::vector<double>{}
+                         : cycleSparseness (cycles, positions, spacing, threads_));
   const std::vector<std::uint32_t> vertex_band =
       rimBand (holes_, positions, adjacency, used_band_width_, spacing);
   rim_band_labels_.assign (input_->size(), 0);
