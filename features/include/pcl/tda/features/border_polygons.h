@@ -19,9 +19,10 @@ namespace tda {
  * - A vertex is on a border when the directions to its neighbours in \a adjacency,
  *   in the plane fitted to it and them, leave a gap wider than 135 degrees. At the
  *   rim of a round hole of empty radius rho, the gap is 2 acos(r / (2 rho)) for
- *   neighbours within r: 120 degrees at rho = r, 149 at rho = 3 h with the
- *   automatic r = 1.6 h. A smaller angle, such as pcl::BoundaryEstimation's 90
- *   degrees, flags half the points of a jittered sampling at r = 1.6 h.
+ *   neighbours within r: 120 degrees at rho = r, 137 at rho = 3 h with the
+ *   automatic r = 2.2 h (the spacing h). A smaller angle, such as
+ *   pcl::BoundaryEstimation's 90 degrees, flags half the points of a jittered
+ *   sampling at r = 1.6 h.
  * - The border vertices, joined through paths of up to two edges (so that rim
  *   points with narrower gaps do not cut their rim), form components. One with
  *   fewer than 2 pi \a min_clearance / \a radius vertices is too short to go around
