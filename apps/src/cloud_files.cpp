@@ -13,6 +13,7 @@
 #include <cstring>
 #include <fstream>
 #include <limits>
+#include <optional>
 
 namespace pcl {
 namespace tda {
@@ -113,10 +114,11 @@ makeCoordinatesFloat (pcl::PCLPointCloud2& cloud, const std::string& path)
   cloud = std::move (converted);
 }
 
-} // namespace
-
-void
-loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud)
+/** Opens the PCD file at \a path into \a file and checks its header and the size of
+ * its data (readPCDLayout()).
+ * \throws pcl::IOException naming the file and saying what is wrong with it */
+PCDLayout
+openPCDFile (const std::string& path, std::ifstream& file)
 {
   struct stat status;
   if (::stat (path.c_str(), &status) != 0)
@@ -127,18 +129,39 @@ loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud)
   if (!S_ISREG (status.st_mode))
     PCL_THROW_EXCEPTION (pcl::IOException,
                          path << " is not a regular file (a device, pipe or socket)");
-  std::ifstream file (path, std::ios::binary);
+  file.open (path, std::ios::binary);
   if (!file)
     PCL_THROW_EXCEPTION (pcl::IOException,
                          "cannot open " << path << ": " << std::strerror (errno));
-  PCDLayout layout;
   try {
-    layout = readPCDLayout (file, static_cast<std::uint64_t> (status.st_size));
+    return readPCDLayout (file, static_cast<std::uint64_t> (status.st_size));
   }
   catch (const pcl::IOException& error) {
     PCL_THROW_EXCEPTION (pcl::IOException,
                          path << " is not a valid PCD file: " << errorMessage (error));
   }
+}
+
+} // namespace
+
+std::optional<std::uint64_t>
+pcdPointCount (const std::string& path)
+{
+  try {
+    std::ifstream file;
+    const PCDLayout layout = openPCDFile (path, file);
+    return std::uint64_t{layout.header.width} * layout.header.height;
+  }
+  catch (const pcl::IOException&) {
+    return std::nullopt;
+  }
+}
+
+void
+loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud)
+{
+  std::ifstream file;
+  const PCDLayout layout = openPCDFile (path, file);
   for (const char* name : {"x", "y", "z"}) {
     const int field = pcl::getFieldIndex (layout.header, name);
     if (field < 0)

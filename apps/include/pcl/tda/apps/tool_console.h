@@ -8,7 +8,9 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
 
+#include <cstdint>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace pcl {
@@ -94,9 +96,10 @@ private:
 /** \brief The main() of a tool: "-h" or "--help" prints the help only and exits
  * with 0, fewer than \a least_arguments arguments print it and exit with 1; else
  * starts the tool again with huge pages for malloc (restartWithHugePageMalloc()),
- * prints \a intro, reads the options with \a parse and returns the exit code of
- * \a run. A refusal (a pcl::PCLException thrown by either) prints its message and
- * exits with 1. */
+ * unless its first argument is a PCD file of fewer than HUGE_PAGE_MALLOC_MIN_POINTS
+ * points, where the restart would cost more than it saves; prints \a intro, reads the
+ * options with \a parse and returns the exit code of \a run. A refusal (a
+ * pcl::PCLException thrown by either) prints its message and exits with 1. */
 template <typename Options>
 int
 runTool (int argc,
@@ -120,7 +123,9 @@ runTool (int argc,
     print_help (argv[0]);
     return 1;
   }
-  restartWithHugePageMalloc (argv);
+  const std::optional<std::uint64_t> input_points = pcdPointCount (argv[1]);
+  if (!input_points || *input_points >= HUGE_PAGE_MALLOC_MIN_POINTS)
+    restartWithHugePageMalloc (argv);
   print_intro();
   ToolConsole console;
   try {
