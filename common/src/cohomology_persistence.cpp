@@ -1,5 +1,6 @@
 #include <pcl/tda/common/coboundary_reduction.h>
 #include <pcl/tda/common/cohomology_persistence.h>
+#include <pcl/tda/common/cycle_set.h>
 #include <pcl/tda/common/edge_adjacency.h>
 #include <pcl/tda/common/large_vector.h>
 

@@ -1,9 +1,9 @@
 #pragma once
 
-#include <pcl/tda/common/cycle_set.h>
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/common/progress.h>
+#include <pcl/tda/common/reduction_column.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -75,7 +75,7 @@ private:
  * Of the others, an edge whose oldest coboundary triangle no column has as pivot yet
  * forms an emergent pair with it: its column is reduced as it is, so it is neither
  * sorted nor stored (as Ripser does). Cohomology pairs the same simplices as
- * homology.
+ * homology. The column under reduction is a ReductionColumn: a heap once long.
  *
  * \a Coboundaries names a triangle by a \c Key ordered as the filtration and
  * provides:
@@ -102,7 +102,8 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
   // emergent pair's (its coboundary, unchanged) only when first needed: few edges
   // need one.
   StoredColumns<Key> stored (num_edges);
-  std::vector<Key> column, owner_column, buffer;
+  std::vector<Key> column, owner_column;
+  ReductionColumn<Key> reduced;
   for (std::size_t k = 0; k < num_edges; ++k) {
     const auto edge = static_cast<SimplexIndex> (num_edges - 1 - k);
     reportProgress (progress, k, num_edges);
@@ -117,20 +118,21 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
       continue;
     }
     std::sort (column.begin(), column.end());
+    reduced.assign (column);
     SimplexIndex owner;
-    while (!column.empty() &&
-           (owner = coboundaries.owner (column.front())) != INVALID_SIMPLEX) {
+    while (reduced.findPivot() &&
+           (owner = coboundaries.owner (reduced.pivot())) != INVALID_SIMPLEX) {
       if (!stored.has (owner)) { // an apparent or emergent pair: its coboundary
         coboundaries.coboundary (owner, owner_column);
         std::sort (owner_column.begin(), owner_column.end());
         stored.store (owner, owner_column);
       }
       const auto [first, last] = stored.column (owner);
-      addCycle (column, first, last, buffer);
+      reduced.add (first, last);
     }
-    if (!column.empty()) {
-      coboundaries.setOwner (column.front(), edge);
-      stored.store (edge, column);
+    if (reduced.findPivot()) {
+      coboundaries.setOwner (reduced.pivot(), edge);
+      stored.store (edge, reduced.sum());
     }
   }
 }
