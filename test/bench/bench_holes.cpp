@@ -731,8 +731,12 @@ main (int argc, char** argv)
       "(s) | PCL (s) | PCL / ours | ours flagged | PCL flagged |\n"
       "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   bool first = true;
-  for (const std::string name :
-       {"milk.pcd", "rops_cloud.pcd", "bunny.pcd", "car6.pcd"}) {
+  for (const std::string name : {"milk.pcd",
+                                 "rops_cloud.pcd",
+                                 "bunny.pcd",
+                                 "car6.pcd",
+                                 "kinect_frame.pcd",
+                                 "table_scene_mug_stereo_textured.pcd"}) {
     Cloud::Ptr raw (new Cloud);
     if (pcl::io::loadPCDFile (options.data + "/" + name, *raw) < 0) {
       std::printf ("| %s | (not found in %s) |\n", name.c_str(), options.data.c_str());
