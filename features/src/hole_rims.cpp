@@ -79,12 +79,19 @@ holeRims (const std::vector<MinimalCycle>& cycles,
   struct Found {
     const MinimalCycle* cycle;
     ProjectedPolygon polygon;
+    double reach; // the farthest rim point from the centroid
     HoleRim hole;
 
+    /** True when \a point lies inside the rim seen along its normal, no farther
+     * from its plane than the rim reaches: not a point across a tube or a closed
+     * surface, whose holes can line up along the normal. */
     bool
     surrounds (const Point3d& point) const
     {
-      return polygon.contains (polygon.project (point));
+      const Eigen::Vector3d offset =
+          Eigen::Vector3d (point[0], point[1], point[2]) - polygon.centroid();
+      return std::abs (offset.dot (polygon.normal())) <= reach &&
+             polygon.contains (polygon.project (point));
     }
 
     Point3d
@@ -106,6 +113,11 @@ holeRims (const std::vector<MinimalCycle>& cycles,
     if (hole.tilt_degrees > max_tilt_degrees)
       continue;
     hole.rim = rim;
+    const Point3d centroid{
+        polygon.centroid().x(), polygon.centroid().y(), polygon.centroid().z()};
+    double reach = 0.0;
+    for (const SimplexIndex v : rim)
+      reach = std::max (reach, distance (positions[v], centroid));
     for (std::size_t i = 0; i < rim.size(); ++i) {
       const double length =
           distance (positions[rim[i]], positions[rim[(i + 1) % rim.size()]]);
@@ -115,7 +127,7 @@ holeRims (const std::vector<MinimalCycle>& cycles,
     hole.area = polygon.area();
     hole.clearance = cycle.clearance;
     hole.centroid = polygon.centroid().cast<float>();
-    found.push_back ({&cycle, polygon, std::move (hole)});
+    found.push_back ({&cycle, polygon, reach, std::move (hole)});
   }
   // Several classes can go around the same empty region: keep its shortest rim.
   const auto byPerimeter = [] (const Found& a, const Found& b) {

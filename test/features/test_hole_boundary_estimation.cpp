@@ -458,3 +458,37 @@ TEST (HoleBoundaryEstimation, MaxCycleLengthDropsLongRims)
 }
 
 } // namespace
+
+TEST (HoleBoundaryEstimation, HolesFacingAcrossATubeAreTwoHoles)
+{
+  // A tube of radius 0.1 sampled every 0.01 (63 points around, 41 rows), with two
+  // holes of radius 0.04 on opposite sides at the same height: seen along its
+  // normal, each hole's centre lies inside the other's rim, 0.2 away across the
+  // tube. Both are holes.
+  const float step = 0.01f, tube = 0.1f, hole_radius = 0.04f;
+  const int around = 63;
+  const Eigen::Vector3f front (tube, 0.0f, 0.2f), back (-tube, 0.0f, 0.2f);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr cloud (new pcl::PointCloud<pcl::PointXYZ>);
+  for (int row = 0; row <= 40; ++row)
+    for (int k = 0; k < around; ++k) {
+      const float angle = 2.0f * static_cast<float> (M_PI) * k / around;
+      const Eigen::Vector3f p (
+          tube * std::cos (angle), tube * std::sin (angle), row * step);
+      if ((p - front).norm() > hole_radius && (p - back).norm() > hole_radius)
+        cloud->push_back (pcl::PointXYZ (p.x(), p.y(), p.z()));
+    }
+  Estimation estimation;
+  estimation.setInputCloud (cloud);
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  ASSERT_EQ (estimation.getHoles().size(), 2u);
+  for (const Eigen::Vector3f& centre : {front, back})
+    EXPECT_TRUE (std::any_of (estimation.getHoles().begin(),
+                              estimation.getHoles().end(),
+                              [&] (const pcl::tda::HoleRim& rim) {
+                                // The rim's centroid is inside the tube, on the
+                                // hole's side.
+                                return (rim.centroid - centre).norm() < hole_radius;
+                              }))
+        << centre.transpose();
+}
