@@ -50,8 +50,10 @@ struct HoleRim {
  * radius (MinimalCycle::clearance) of at least \a min_clearance, times the median
  * over the rim's points of \a sparseness where it is given: where the surface is
  * sampled more sparsely, its gaps are wider by as much. Cycles around
- * the same empty region (the centre of one's empty disk inside the other's rim)
- * give one hole, with the shortest of their rims.
+ * the same empty region (the centre of one's empty disk inside the other's rim seen
+ * along its normal, and no farther from its plane than its farthest rim point is
+ * from its centroid) give one hole, with the shortest of their rims: holes that line
+ * up across a tube or a closed surface stay apart.
  *
  * Holes come in decreasing order of rim length, ties by their class edge.
  * \param[in] cycles the minimal 1-cycles (minimalCycles())
