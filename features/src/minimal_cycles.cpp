@@ -433,8 +433,15 @@ private:
 
   /** The shortest closed path through the region that winds around \a p an odd
    * number of times: Dijkstra on two copies of the region's graph (the parity of
-   * the crossings of a ray from \a p), from the region's vertex nearest to \a p to
-   * its copy. \a points are the region's vertices in the plane. */
+   * the crossings of a ray from \a p), from the region's vertex nearest to \a p,
+   * s, in copy 0, toward its copy s'. The graph is the same seen from either copy,
+   * so the way back from a vertex x to s' is as long as the way from s to x's
+   * other copy: the path s -> u -> v -> s' through an edge uv is the path to u, the
+   * edge, and the path to v's other copy, reversed. The search meets itself in the
+   * middle: it stops once it settles vertices half as far as the shortest such
+   * path found, which is then the shortest (the two halves of the shortest path
+   * are settled before), having searched a disk of half the radius of a search for
+   * s' itself. \a points are the region's vertices in the plane. */
   static std::vector<SimplexIndex>
   windingCycle (const RegionGraph& graph,
                 const std::vector<SimplexIndex>& region,
@@ -447,22 +454,28 @@ private:
         start = i;
     // Ids: the region's vertices, each in two copies (parity 0 and 1).
     const std::size_t n = region.size();
+    constexpr std::uint32_t NONE = std::numeric_limits<std::uint32_t>::max();
+    const auto other_copy = [n] (std::uint32_t id) {
+      return static_cast<std::uint32_t> (id >= n ? id - n : id + n);
+    };
     std::vector<double> distance (2 * n, std::numeric_limits<double>::infinity());
-    std::vector<std::uint32_t> previous (2 * n,
-                                         std::numeric_limits<std::uint32_t>::max());
+    std::vector<std::uint32_t> previous (2 * n, NONE);
+    std::vector<std::uint8_t> settled (2 * n, 0);
     using Item = std::pair<double, std::uint32_t>;
     std::priority_queue<Item, std::vector<Item>, std::greater<Item>> queue;
     const auto source = static_cast<std::uint32_t> (start);
-    const auto target = static_cast<std::uint32_t> (start + n);
     distance[source] = 0.0;
     queue.push ({0.0, source});
+    double shortest = std::numeric_limits<double>::infinity();
+    std::uint32_t last_out = NONE, first_back = NONE; // the middle edge of the best
     while (!queue.empty()) {
       const auto [d, id] = queue.top();
       queue.pop();
       if (d > distance[id])
         continue;
-      if (id == target)
+      if (2.0 * d >= shortest)
         break;
+      settled[id] = 1;
       const std::uint32_t parity = id >= n ? 1 : 0;
       const std::size_t v = id - parity * n;
       for (std::size_t arc = graph.offsets[v]; arc < graph.offsets[v + 1]; ++arc) {
@@ -470,6 +483,12 @@ private:
         const std::uint32_t flip = crossesRay (points[v], points[w], p) ? 1 : 0;
         const auto next = static_cast<std::uint32_t> (w + (parity ^ flip) * n);
         const double through = d + graph.arcs[arc].length;
+        if (settled[other_copy (next)] &&
+            through + distance[other_copy (next)] < shortest) {
+          shortest = through + distance[other_copy (next)];
+          last_out = id;
+          first_back = other_copy (next);
+        }
         if (through < distance[next]) {
           distance[next] = through;
           previous[next] = id;
@@ -478,12 +497,13 @@ private:
       }
     }
     std::vector<SimplexIndex> cycle;
-    if (previous[target] == std::numeric_limits<std::uint32_t>::max())
+    if (last_out == NONE)
       return cycle;
-    for (std::uint32_t id = previous[target]; id != source; id = previous[id])
+    for (std::uint32_t id = last_out; id != NONE; id = previous[id])
       cycle.push_back (region[id >= n ? id - n : id]);
-    cycle.push_back (region[start]);
-    std::reverse (cycle.begin(), cycle.end());
+    std::reverse (cycle.begin(), cycle.end()); // s ... u
+    for (std::uint32_t id = first_back; id != source; id = previous[id])
+      cycle.push_back (region[id >= n ? id - n : id]); // v ... (s)
     return cycle;
   }
 
