@@ -524,6 +524,65 @@ private:
   std::map<std::vector<SimplexIndex>, std::optional<MinimalCycle>> found_again_;
 };
 
+/** Initial cycles of at least this many points are compared with each other
+ * (nearDuplicates()). */
+constexpr std::size_t LONG_CYCLE_POINTS = 1000;
+/** The share of their points two long initial cycles must have in common to be
+ * nearly the same polygon. */
+constexpr double SAME_POLYGON_SHARE = 0.9;
+
+/** The number of elements two sorted vectors have in common (as multisets). */
+std::size_t
+sharedCount (const std::vector<SimplexIndex>& a, const std::vector<SimplexIndex>& b)
+{
+  std::size_t shared = 0;
+  for (std::size_t i = 0, j = 0; i < a.size() && j < b.size();) {
+    if (a[i] < b[j])
+      ++i;
+    else if (b[j] < a[i])
+      ++j;
+    else {
+      ++shared;
+      ++i;
+      ++j;
+    }
+  }
+  return shared;
+}
+
+/** Per initial cycle, 1 when it is long and shares SAME_POLYGON_SHARE of its points,
+ * and of the other's, with an earlier long cycle that is searched. Many classes can go
+ * around the same large region with nearly the same cycle (about 25 around the
+ * table top of table_scene_mug_stereo_textured.pcd with a fifth of its points
+ * removed, 3,200-3,800 points each, polygons of 40,000-58,000 points), and each would
+ * fill that region and search the same empty regions in it again. */
+std::vector<std::uint8_t>
+nearDuplicates (const std::vector<InitialCycle>& initial)
+{
+  std::vector<std::uint8_t> duplicate (initial.size(), 0);
+  // The long cycles searched so far, their points sorted, by number of points.
+  std::multimap<std::size_t, std::vector<SimplexIndex>> searched;
+  for (std::size_t i = 0; i < initial.size(); ++i) {
+    const std::size_t size = initial[i].vertices.size();
+    if (size < LONG_CYCLE_POINTS)
+      continue;
+    std::vector<SimplexIndex> points = initial[i].vertices;
+    std::sort (points.begin(), points.end());
+    // Sharing that many points needs about as many points.
+    const auto first = searched.lower_bound (
+        static_cast<std::size_t> (std::ceil (SAME_POLYGON_SHARE * size)));
+    const auto last =
+        searched.upper_bound (static_cast<std::size_t> (size / SAME_POLYGON_SHARE));
+    duplicate[i] = std::any_of (first, last, [&] (const auto& other) {
+      return sharedCount (points, other.second) >=
+             SAME_POLYGON_SHARE * std::max (size, other.first);
+    });
+    if (!duplicate[i])
+      searched.emplace (size, std::move (points));
+  }
+  return duplicate;
+}
+
 } // namespace
 
 std::vector<SimplexIndex>
@@ -583,6 +642,7 @@ minimalCycles (const FilteredComplex& complex,
   std::vector<double> lengths (adjacency.entries.size());
   for (std::size_t k = 0; k < lengths.size(); ++k)
     lengths[k] = edges[adjacency.entries[k].edge].value;
+  const std::vector<std::uint8_t> duplicate = nearDuplicates (initial);
   std::atomic<std::size_t> done{0};
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
@@ -591,7 +651,8 @@ minimalCycles (const FilteredComplex& complex,
         adjacency, lengths, positions, min_clearance / 4.0, min_clearance);
 #pragma omp for schedule(dynamic, 1)
     for (std::int64_t i = 0; i < count; ++i) {
-      per_class[i] = finder.rims (initial[i].vertices, initial[i].class_edge);
+      if (!duplicate[i])
+        per_class[i] = finder.rims (initial[i].vertices, initial[i].class_edge);
       const std::size_t searched = ++done;
       if (progress && omp_get_thread_num() == 0)
         progress (searched, initial.size());

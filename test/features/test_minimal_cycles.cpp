@@ -273,4 +273,71 @@ TEST (MinimalCycles, AnnulusRimHugsTheHoleForAnyOrderAndThreads)
   }
 }
 
+/** The points of the border of the rectangle [x0, x1] x [y0, y1] of a grid of
+ * \a width columns, in order around it. */
+std::vector<SimplexIndex>
+rectangleLoop (int x0, int y0, int x1, int y1, int width)
+{
+  std::vector<SimplexIndex> loop;
+  const auto id = [width] (int x, int y) {
+    return static_cast<SimplexIndex> (y * width + x);
+  };
+  for (int x = x0; x < x1; ++x)
+    loop.push_back (id (x, y0));
+  for (int y = y0; y < y1; ++y)
+    loop.push_back (id (x1, y));
+  for (int x = x1; x > x0; --x)
+    loop.push_back (id (x, y1));
+  for (int y = y1; y > y0; --y)
+    loop.push_back (id (x0, y));
+  return loop;
+}
+
+TEST (MinimalCycles, ALongCycleNearlyTheSameAsAnEarlierOneIsNotSearchedAgain)
+{
+  // A plane grid of 300 x 260 points, step 1, joined to its 8 neighbours, with a
+  // hole of radius 6 (its points kept, but no edge enters it). Three long initial
+  // cycles around the hole: the grid's border (1116 points), the same border from
+  // another start (all points shared: not searched), and the border of the lower
+  // 300 x 221 points (1038 points, 66 % of them shared: searched).
+  constexpr int WIDTH = 300, HEIGHT = 260;
+  const Point3d centre{150.0, 100.0, 0.0};
+  std::vector<Point3d> positions;
+  for (int y = 0; y < HEIGHT; ++y)
+    for (int x = 0; x < WIDTH; ++x)
+      positions.push_back ({static_cast<double> (x), static_cast<double> (y), 0.0});
+  const auto in_hole = [&] (SimplexIndex v) {
+    return pcl::tda::distance (positions[v], centre) < 6.0;
+  };
+  std::vector<FilteredEdge> edges;
+  for (int y = 0; y < HEIGHT; ++y)
+    for (int x = 0; x < WIDTH; ++x)
+      for (const auto& [dx, dy] :
+           std::vector<std::pair<int, int>>{{1, 0}, {0, 1}, {1, 1}, {-1, 1}}) {
+        const int u = x + dx, v = y + dy;
+        if (u < 0 || u >= WIDTH || v >= HEIGHT)
+          continue;
+        const auto a = static_cast<SimplexIndex> (y * WIDTH + x),
+                   b = static_cast<SimplexIndex> (v * WIDTH + u);
+        if (!in_hole (a) && !in_hole (b))
+          edges.push_back ({a, b, pcl::tda::distance (positions[a], positions[b])});
+      }
+  const FilteredComplex complex =
+      FilteredComplex::fromLists (positions.size(), edges, {});
+  std::vector<SimplexIndex> border = rectangleLoop (0, 0, WIDTH - 1, HEIGHT - 1, WIDTH);
+  std::vector<SimplexIndex> rotated = border;
+  std::rotate (rotated.begin(), rotated.begin() + 100, rotated.end());
+  const std::vector<pcl::tda::InitialCycle> initial{
+      {border, 7}, {rotated, 9}, {rectangleLoop (0, 0, WIDTH - 1, 220, WIDTH), 11}};
+  const auto cycles =
+      pcl::tda::minimalCycles (complex, initial, positions, adjacencyOf (complex), 3.0);
+  std::vector<SimplexIndex> classes;
+  for (const auto& cycle : cycles) {
+    classes.push_back (cycle.class_edge);
+    for (const SimplexIndex v : cycle.vertices)
+      EXPECT_LT (pcl::tda::distance (positions[v], centre), 8.0);
+  }
+  EXPECT_EQ (classes, (std::vector<SimplexIndex>{7, 11}));
+}
+
 } // namespace

@@ -109,7 +109,10 @@ classCycles (const FilteredComplex& complex,
  *
  * Initial cycles are independent: they are searched in parallel, and each result
  * depends only on the complex, not on the number of threads. Several initial cycles
- * may give rims around the same hole (holeRims() keeps one).
+ * may give rims around the same hole (holeRims() keeps one). A long initial cycle
+ * (1000 points or more) that shares 90 % of its points, and of the other's, with an
+ * earlier one is not searched: many classes can go around the same large region
+ * with nearly the same cycle, and would search the same empty regions again.
  * \param[in] complex the filtered complex (the lengths of its edges)
  * \param[in] initial the initial cycles
  * \param[in] positions the position of every vertex of \a complex
