@@ -106,11 +106,10 @@ TEST (HoleBoundaryEstimation, TubesAndClosedSurfacesNoHandleReported)
   // On a closed surface with k holes, k - 1 of them are independent 1-classes: the
   // polygons around the borders find the others. The waist and the open ends of a
   // tube and the loops of a torus stand across the surface and must not be
-  // reported. Each surface may miss one hole; of the 9 holes of each kind, the
-  // cylinder's are all found, and all but one of the sphere's and the torus'.
+  // reported. At noise 0 every hole of these surfaces is found (the noisiest ones
+  // miss at most one of 12 per kind: benchmarks.md).
   for (const HoleSurfaceKind kind :
-       {HoleSurfaceKind::CYLINDER, HoleSurfaceKind::SPHERE, HoleSurfaceKind::TORUS}) {
-    std::size_t matched = 0, holes = 0;
+       {HoleSurfaceKind::CYLINDER, HoleSurfaceKind::SPHERE, HoleSurfaceKind::TORUS})
     for (const std::uint64_t seed : {1u, 2u, 3u}) {
       SCOPED_TRACE (::testing::Message()
                     << "kind " << static_cast<int> (kind) << " seed " << seed);
@@ -120,14 +119,9 @@ TEST (HoleBoundaryEstimation, TubesAndClosedSurfacesNoHandleReported)
       pcl::PointCloud<pcl::Boundary> flags;
       estimation.compute (flags);
       const HoleCounts counts = countHoles (estimation.getHoles(), surface);
-      EXPECT_GE (counts.matched + 1, surface.holes.size());
+      EXPECT_EQ (counts.matched, surface.holes.size());
       EXPECT_EQ (counts.unmatched, 0u);
-      matched += counts.matched;
-      holes += surface.holes.size();
     }
-    EXPECT_GE (matched + (kind == HoleSurfaceKind::CYLINDER ? 0 : 1), holes)
-        << "kind " << static_cast<int> (kind);
-  }
 }
 
 TEST (HoleBoundaryEstimation, SearchesTheClassesAliveAtThePersistenceRadius)
