@@ -113,11 +113,6 @@ holeRims (const std::vector<MinimalCycle>& cycles,
     if (hole.tilt_degrees > max_tilt_degrees)
       continue;
     hole.rim = rim;
-    const Point3d centroid{
-        polygon.centroid().x(), polygon.centroid().y(), polygon.centroid().z()};
-    double reach = 0.0;
-    for (const SimplexIndex v : rim)
-      reach = std::max (reach, distance (positions[v], centroid));
     for (std::size_t i = 0; i < rim.size(); ++i) {
       const double length =
           distance (positions[rim[i]], positions[rim[(i + 1) % rim.size()]]);
@@ -127,7 +122,10 @@ holeRims (const std::vector<MinimalCycle>& cycles,
     hole.area = polygon.area();
     hole.clearance = cycle.clearance;
     hole.centroid = polygon.centroid().cast<float>();
-    found.push_back ({&cycle, polygon, reach, std::move (hole)});
+    Found& added = found.emplace_back (Found{&cycle, polygon, 0.0, std::move (hole)});
+    const Point3d centre = added.center();
+    for (const SimplexIndex v : rim)
+      added.reach = std::max (added.reach, distance (positions[v], centre));
   }
   // Several classes can go around the same empty region: keep its shortest rim.
   const auto byPerimeter = [] (const Found& a, const Found& b) {

@@ -483,11 +483,11 @@ private:
         const std::uint32_t flip = crossesRay (points[v], points[w], p) ? 1 : 0;
         const auto next = static_cast<std::uint32_t> (w + (parity ^ flip) * n);
         const double through = d + graph.arcs[arc].length;
-        if (settled[other_copy (next)] &&
-            through + distance[other_copy (next)] < shortest) {
-          shortest = through + distance[other_copy (next)];
+        const std::uint32_t back = other_copy (next);
+        if (settled[back] && through + distance[back] < shortest) {
+          shortest = through + distance[back];
           last_out = id;
-          first_back = other_copy (next);
+          first_back = back;
         }
         if (through < distance[next]) {
           distance[next] = through;
