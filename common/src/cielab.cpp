@@ -48,14 +48,5 @@ rgbToLab (std::uint8_t r, std::uint8_t g, std::uint8_t b)
           static_cast<float> (200.0 * (fy - fz))};
 }
 
-float
-deltaE76 (const LabColor& first, const LabColor& second)
-{
-  const float dl = first.l - second.l;
-  const float da = first.a - second.a;
-  const float db = first.b - second.b;
-  return std::sqrt (dl * dl + da * da + db * db);
-}
-
 } // namespace tda
 } // namespace pcl

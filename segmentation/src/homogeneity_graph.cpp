@@ -17,6 +17,8 @@ namespace {
 
 /** How many times the typical change (the noise) a colour may change at most. */
 constexpr float NOISE_CHANGES = 3.0f;
+/** The typical change is measured on every this many-th vertex. */
+constexpr std::size_t NOISE_SAMPLE_STRIDE = 8;
 
 /** The key of the edge between \a a and \a b, for a sorted set of edges. */
 std::uint64_t
@@ -286,8 +288,27 @@ medianSmoothedColors (const std::vector<LabColor>& colors,
                       float max_change,
                       unsigned int threads)
 {
-  std::vector<LabColor> medians (colors.size());
-  std::vector<float> changes (colors.size());
+  // The noise: the median change of a colour by the median of its whole
+  // neighbourhood, over a sample of the vertices; a colour changes by up to a few
+  // times it.
+  std::vector<LabColor> neighborhood;
+  std::vector<float> changes;
+  for (std::size_t v = 0; v < colors.size(); v += NOISE_SAMPLE_STRIDE) {
+    neighborhood.assign (1, colors[v]);
+    for (std::size_t k = lists.offsets[v]; k < lists.offsets[v + 1]; ++k)
+      neighborhood.push_back (colors[lists.neighbors[k]]);
+    changes.push_back (deltaE76 (channelMedians (neighborhood), colors[v]));
+  }
+  std::nth_element (
+      changes.begin(), changes.begin() + changes.size() / 2, changes.end());
+  const float limit =
+      changes.empty()
+          ? max_change
+          : std::max (max_change, NOISE_CHANGES * changes[changes.size() / 2]);
+
+  // Neighbours farther than that lie across a border: left out, so that no blend
+  // of the two sides forms along it.
+  std::vector<LabColor> smoothed (colors.size());
   const auto num_vertices = static_cast<std::int64_t> (colors.size());
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
@@ -295,22 +316,16 @@ medianSmoothedColors (const std::vector<LabColor>& colors,
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t v = 0; v < num_vertices; ++v) {
       values.assign (1, colors[v]);
-      for (std::size_t k = lists.offsets[v]; k < lists.offsets[v + 1]; ++k)
-        values.push_back (colors[lists.neighbors[k]]);
-      medians[v] = channelMedians (values);
-      changes[v] = deltaE76 (medians[v], colors[v]);
+      for (std::size_t k = lists.offsets[v]; k < lists.offsets[v + 1]; ++k) {
+        const LabColor& color = colors[lists.neighbors[k]];
+        if (deltaE76 (color, colors[v]) <= limit)
+          values.push_back (color);
+      }
+      const LabColor median = channelMedians (values);
+      smoothed[v] = deltaE76 (median, colors[v]) <= limit ? median : colors[v];
     }
   }
-  // The noise: the median change; a colour changes by up to a few times it.
-  std::vector<float> sorted (changes);
-  std::nth_element (sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-  const float limit =
-      sorted.empty() ? max_change
-                     : std::max (max_change, NOISE_CHANGES * sorted[sorted.size() / 2]);
-  for (std::size_t v = 0; v < colors.size(); ++v)
-    if (changes[v] > limit)
-      medians[v] = colors[v];
-  return medians;
+  return smoothed;
 }
 
 void

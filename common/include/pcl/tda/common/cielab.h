@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 namespace pcl {
@@ -25,8 +26,14 @@ rgbToLab (std::uint8_t r, std::uint8_t g, std::uint8_t b);
 
 /** \brief The CIE 1976 colour difference Delta E*ab (thesis Eq 4.5): the Euclidean
  * distance of two CIELAB colours. About 2.3 is a just noticeable difference. */
-float
-deltaE76 (const LabColor& first, const LabColor& second);
+inline float
+deltaE76 (const LabColor& first, const LabColor& second)
+{
+  const float dl = first.l - second.l;
+  const float da = first.a - second.a;
+  const float db = first.b - second.b;
+  return std::sqrt (dl * dl + da * da + db * db);
+}
 
 } // namespace tda
 } // namespace pcl

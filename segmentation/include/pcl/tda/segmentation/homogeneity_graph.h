@@ -128,14 +128,18 @@ neighborNormals (const std::vector<Point3d>& points,
 
 /** \brief Colours with the noise filtered out and the borders kept: each vertex'
  * CIELAB colour replaced by the median, channel by channel, of the colours of the
- * vertex and its neighbours in the graph, when that median is within \a max_change
- * (Delta E76) of its own colour. Within a region the median removes the sensor
- * noise; at a border, where the majority of a point's neighbours may lie in the
- * next region, the median is far from the point's colour and the point keeps its
- * own, so that borders do not move and blends do not form along them.
+ * vertex and of those of its neighbours in the graph that lie on its side of any
+ * border: within a limit of its own colour. The limit is \a max_change or, if
+ * larger, 3 times the noise (the median change of a colour by the median of its
+ * whole neighbourhood). Within a region the median removes the sensor noise; at a
+ * border the neighbours across it are left out, so that the point is smoothed by its
+ * own side and no blend of the two sides forms along the border (a median over
+ * every neighbour would take the other side's colour where most neighbours lie
+ * across). A vertex whose median is farther than the limit from its colour keeps
+ * its own.
  * \param[in] colors CIELAB colour of every vertex
  * \param[in] lists the neighbour lists of the graph
- * \param[in] max_change the largest change of a colour, in Delta E76
+ * \param[in] max_change the smallest limit, in Delta E76
  * \param[in] threads OpenMP threads (0: OpenMP's default) */
 std::vector<LabColor>
 medianSmoothedColors (const std::vector<LabColor>& colors,

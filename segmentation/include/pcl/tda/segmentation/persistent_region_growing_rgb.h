@@ -114,8 +114,9 @@ public:
   /** \brief Nearest region points a point far from every region chooses from
    * (attachIsolatedPoints()). */
   static constexpr std::size_t ISOLATED_NEIGHBORS = 8;
-  /** \brief The colour smoothing changes a colour by at most this many times the
-   * colour threshold (medianSmoothedColors()). */
+  /** \brief The colour smoothing takes the neighbours within, and changes a colour
+   * by at most, this many times the colour threshold, or 3 times the noise if that
+   * is more (medianSmoothedColors()). */
   static constexpr double SMOOTHING_RANGE = 2.5;
   /** \brief Bytes per edge of the radius graph at the peak of extract(): the graph
    * and the copy of its similar edges for the spanning forest. */
