@@ -530,7 +530,7 @@ runHoles (const Options& options,
   parameters.seed = static_cast<std::uint64_t> (options.seed);
   const pcl::tda::HoleSurface surface = pcl::tda::generateHoleSurface (parameters);
   console.endStep (std::to_string (surface.cloud->size()) + " points, " +
-                   std::to_string (surface.holes.size()) + " holes, " +
+                   pcl::tda::countOf (surface.holes.size(), "hole") + ", " +
                    std::to_string (surface.removed->size()) + " removed at random");
   print_info ("Spacing h = ");
   print_value ("%g", surface.spacing);

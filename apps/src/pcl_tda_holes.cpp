@@ -206,7 +206,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   }
   const std::vector<pcl::tda::HoleRim>& holes = estimation.getHoles();
   std::ostringstream found;
-  found << holes.size() << " holes, radius " << estimation.getUsedRadius()
+  found << pcl::tda::countOf (holes.size(), "hole") << ", radius "
+        << estimation.getUsedRadius()
         << (options.radius > 0.0 ? " (given)" : " (from the spacing)") << ", "
         << estimation.getSearchCounts().edges << " edges, "
         << estimation.getSearchCounts().open_classes << " open 1-classes, "
@@ -266,7 +267,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       pcl::tda::PlotOptions plot;
       std::ostringstream title;
       title << options.input << ": H1 up to radius " << estimation.getUsedRadius()
-            << ", " << holes.size() << " holes";
+            << ", " << pcl::tda::countOf (holes.size(), "hole");
       plot.title = title.str();
       plot.max_value = estimation.getUsedRadius();
       pcl::tda::saveBarcodeSVG (outputs.temporary (options.barcode_svg),

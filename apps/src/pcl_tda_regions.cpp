@@ -241,7 +241,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     return 1;
   }
   std::ostringstream grown;
-  grown << regions.size() << " regions at Delta E "
+  grown << pcl::tda::countOf (regions.size(), "region") << " at Delta E "
         << growing.getChosenRegionColorThreshold()
         << (settings.region_color == 0.0 ? " (chosen)" : "") << ", radius " << radius
         << ", " << growing.getNumEdges() << " edges";
@@ -279,7 +279,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       pcl::tda::PlotOptions plot;
       std::ostringstream title;
       title << options.input << ": regions of " << settings.min_size
-            << "+ points over Delta E, " << regions.size() << " regions";
+            << "+ points over Delta E, "
+            << pcl::tda::countOf (regions.size(), "region");
       plot.title = title.str();
       plot.unit = "Delta E";
       plot.cut = growing.getChosenRegionColorThreshold();

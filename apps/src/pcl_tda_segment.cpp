@@ -157,7 +157,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     return 1;
   }
   std::ostringstream clustered;
-  clustered << clusters.size() << " clusters at distance "
+  clustered << pcl::tda::countOf (clusters.size(), "cluster") << " at distance "
             << extraction.getChosenDistance() << (options.automatic ? " (chosen)" : "")
             << ", " << extraction.getNumEdges() << " edges";
   console.endStep (clustered.str());
@@ -199,7 +199,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       pcl::tda::PlotOptions plot;
       std::ostringstream title;
       title << options.input << ": H0, radius " << options.radius << ", "
-            << clusters.size() << " clusters";
+            << pcl::tda::countOf (clusters.size(), "cluster");
       plot.title = title.str();
       plot.max_value = options.radius;
       plot.unit = "m";

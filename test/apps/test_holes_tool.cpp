@@ -142,7 +142,7 @@ TEST (HolesTool, SmallestHoleRadius)
   const RunResult largest = runTool (in + " " + out + " -min-hole " +
                                      std::to_string ((radii[1] + radii[2]) / 2));
   ASSERT_EQ (largest.exit_code, 0) << largest.output;
-  EXPECT_NE (largest.output.find (": 1 holes"), std::string::npos) << largest.output;
+  EXPECT_NE (largest.output.find (": 1 hole,"), std::string::npos) << largest.output;
 }
 
 TEST (HolesTool, CentroidFillAndShuffledInput)

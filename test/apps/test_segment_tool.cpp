@@ -177,7 +177,7 @@ TEST (SegmentTool, AnyDistanceOnTheWholeTableScene)
 
   RunResult result = runTool (input + " " + output + " -radius 10 -plane 0");
   ASSERT_EQ (result.exit_code, 0) << result.output;
-  EXPECT_NE (result.output.find ("1 clusters at distance 10"), std::string::npos)
+  EXPECT_NE (result.output.find ("1 cluster at distance 10"), std::string::npos)
       << result.output;
   LabelledCloud labelled;
   ASSERT_EQ (pcl::io::loadPCDFile (output, labelled), 0);

@@ -16,6 +16,14 @@
 namespace pcl {
 namespace tda {
 
+/** \brief A count for the console: "1 hole", "3 holes" (\a noun, plural but for
+ * one; regular plurals only). */
+inline std::string
+countOf (std::size_t count, const std::string& noun)
+{
+  return std::to_string (count) + " " + noun + (count == 1 ? "" : "s");
+}
+
 /** \brief The console of a tool, in the style of PCL's tools: a step prints
  * "> Doing what " and, when done, "[done, 12.3 ms : result]" on the same line. The
  * step line is flushed at once, so that messages of the work (on stderr) come after
