@@ -131,11 +131,11 @@ neighborNormals (const std::vector<Point3d>& points,
  * vertex and of those of its neighbours in the graph that lie on its side of any
  * border: within a limit of its own colour. The limit is \a max_change or, if
  * larger, 3 times the noise (the median change of a colour by the median of its
- * whole neighbourhood). Within a region the median removes the sensor noise; at a
- * border the neighbours across it are left out, so that the point is smoothed by its
- * own side and no blend of the two sides forms along the border (a median over
- * every neighbour would take the other side's colour where most neighbours lie
- * across). A vertex whose median is farther than the limit from its colour keeps
+ * whole neighbourhood, over every 8th vertex). Within a region the median removes the
+ * sensor noise; at a border the neighbours across it are left out, so that the point is
+ * smoothed by its own side and no blend of the two sides forms along the border (a
+ * median over every neighbour would take the other side's colour where most neighbours
+ * lie across). A vertex whose median is farther than the limit from its colour keeps
  * its own.
  * \param[in] colors CIELAB colour of every vertex
  * \param[in] lists the neighbour lists of the graph
