@@ -271,6 +271,15 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   }
   if (regions.size() > MAX_LINES)
     print_info ("  ... and %zu smaller regions\n", regions.size() - MAX_LINES);
+  const auto in_no_region = static_cast<std::size_t> (
+      std::count_if (labelled.begin(), labelled.end(), [] (const auto& point) {
+        return point.label == 0;
+      }));
+  if (in_no_region > 0)
+    print_info ("  %zu points in no region (label 0): non-finite, or specks of "
+                "another colour under %zu points\n",
+                in_no_region,
+                static_cast<std::size_t> (settings.min_size));
 
   console.beginStep ("Saving", options.output);
   try {

@@ -140,12 +140,13 @@ regionsAtThreshold (std::size_t num_vertices,
   return regions;
 }
 
-void
+std::vector<std::uint32_t>
 mergeSmallRegions (const std::vector<FilteredEdge>& graph,
                    const std::vector<FilteredEdge>& forest,
                    const std::vector<LabColor>& colors,
                    double threshold,
                    std::size_t min_size,
+                   double max_difference,
                    ColorRegions& regions)
 {
   const std::size_t num_vertices = colors.size();
@@ -166,7 +167,7 @@ mergeSmallRegions (const std::vector<FilteredEdge>& graph,
     group_of[v] = group;
   }
   if (num_groups == num_regions)
-    return;
+    return {};
 
   struct Group {
     std::size_t size = 0;
@@ -233,7 +234,7 @@ mergeSmallRegions (const std::vector<FilteredEdge>& graph,
         best_difference = difference;
       }
     }
-    if (best == NO_REGION)
+    if (best == NO_REGION || !(best_difference <= max_difference))
       continue;
     Group& target = groups[best];
     target.size += group.size;
@@ -264,22 +265,30 @@ mergeSmallRegions (const std::vector<FilteredEdge>& graph,
     smallest.push_back (groups[g].smallest);
   }
   result.region_of.resize (num_vertices);
-  for (std::uint32_t v = 0; v < num_vertices; ++v)
-    result.region_of[v] = region_of_group[current (group_of[v])];
+  std::vector<std::uint32_t> isolated;
+  for (std::uint32_t v = 0; v < num_vertices; ++v) {
+    const std::uint32_t group = current (group_of[v]);
+    result.region_of[v] = region_of_group[group];
+    if (result.region_of[v] == NO_REGION && groups[group].neighbors.empty())
+      isolated.push_back (v);
+  }
   renumberBySize (smallest, result);
   regions = std::move (result);
+  return isolated;
 }
 
 void
 attachIsolatedPoints (const std::vector<Point3d>& points,
                       const std::vector<LabColor>& colors,
+                      const std::vector<std::uint32_t>& isolated,
                       std::size_t k,
                       unsigned int threads,
                       ColorRegions& regions)
 {
-  std::vector<std::uint32_t> labelled, isolated;
+  std::vector<std::uint32_t> labelled;
   for (std::uint32_t v = 0; v < points.size(); ++v)
-    (regions.region_of[v] == NO_REGION ? isolated : labelled).push_back (v);
+    if (regions.region_of[v] != NO_REGION)
+      labelled.push_back (v);
   if (isolated.empty() || labelled.empty())
     return;
   const std::size_t num_neighbors = std::min (k, labelled.size());
@@ -397,8 +406,7 @@ chooseColorThreshold (const PersistenceDiagram& bars,
       events.emplace_back (bar.death, -1);
   }
   StableStep chosen;
-  if (!chooseStableStep (
-          events, floor, max_threshold, gap_ratio, StepChoice::LONGEST, chosen))
+  if (!chooseStableStep (events, floor, max_threshold, gap_ratio, chosen))
     return choice;
   choice.low = chosen.low;
   choice.high = chosen.high;

@@ -84,8 +84,7 @@ chooseClusterDistance (const FilteredComplex& complex,
 
   // The count of significant components is a step function of the scale.
   StableStep chosen;
-  if (!chooseStableStep (
-          events, floor, max_distance, gap_ratio, StepChoice::CLEAR_OR_FINEST, chosen))
+  if (!chooseStableStep (events, floor, max_distance, gap_ratio, chosen))
     return choice; // no significant component above the floor
   choice.low = chosen.low;
   choice.high = chosen.high;

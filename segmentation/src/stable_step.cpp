@@ -12,7 +12,6 @@ chooseStableStep (std::vector<std::pair<double, int>> events,
                   double floor,
                   double max_scale,
                   double gap_ratio,
-                  StepChoice choice,
                   StableStep& step)
 {
   struct Step {
@@ -45,27 +44,21 @@ chooseStableStep (std::vector<std::pair<double, int>> events,
     return longest;
   };
   const double enough = std::log (gap_ratio);
-  // The longest step of a split (a count of two or more; those cut short at the end
-  // apart when censored), the finest split that spans the gap ratio, and the longest
-  // step of one; the earliest of equally long ones.
-  const bool censor_last = choice == StepChoice::LONGEST;
-  const Step *split = nullptr, *cut_short = nullptr, *finest = nullptr,
-             *whole = nullptr;
+  // The longest step of a split (a count of two or more), the finest split that
+  // spans the gap ratio, and the longest step of one; the earliest of equally long
+  // ones.
+  const Step *split = nullptr, *finest = nullptr, *whole = nullptr;
   for (const Step& s : steps) {
     if (s.count > 1 && !finest && length (&s) >= enough)
       finest = &s;
-    const Step*& best = s.count == 1                           ? whole
-                        : censor_last && !(s.high < max_scale) ? cut_short
-                                                               : split;
+    const Step*& best = s.count == 1 ? whole : split;
     if (length (&s) > length (best))
       best = &s;
   }
-  if (length (split) < enough && length (cut_short) >= enough)
-    split = cut_short;
   const auto is_clear = [&] (const Step* s) {
     return length (s) >= enough && length (s) >= gap_ratio * longest_other_split (s);
   };
-  if (choice == StepChoice::CLEAR_OR_FINEST && finest && !is_clear (split))
+  if (finest && !is_clear (split))
     split = finest;
   const Step* chosen = split && (length (split) >= enough || !whole) ? split : whole;
   if (!chosen)

@@ -181,10 +181,49 @@ TEST (ColorRegions, SmallPatchesJoinTheMostSimilarNeighbour)
     ColorRegions regions = regionsAtThreshold (12, forest, 3.0, 3);
     ASSERT_EQ (regions.lifetimes.size(), 2u);
     EXPECT_EQ (regions.region_of[5], NO_REGION);
-    mergeSmallRegions (graph, forest, colors, 3.0, 3, regions);
+    mergeSmallRegions (graph, forest, colors, 3.0, 3, INF, regions);
     ASSERT_EQ (regions.lifetimes.size(), 2u);
     EXPECT_EQ (regions.region_of[5], regions.region_of[near_red ? 4 : 6]);
     EXPECT_EQ (regions.region_of[11], NO_REGION);
+  }
+}
+
+// A path 0-1-2-3-4 | 5 | 6-7-8-9-10 of red, a green speck, then blue, and two
+// isolated points beside vertex 0, one red and one green: within the limit of 30
+// Delta E, the speck is left out (no region); with no limit it joins its most
+// similar neighbour. The isolated points are returned for attachIsolatedPoints(),
+// the speck is not, and they join the most similar of their nearest region points.
+TEST (ColorRegions, SpecksOfAnotherColourAreLeftOut)
+{
+  const LabColor red{50.0f, 60.0f, 40.0f}, blue{40.0f, 10.0f, -50.0f},
+      green{60.0f, -60.0f, 50.0f};
+  std::vector<LabColor> colors (13, red);
+  for (std::size_t v = 6; v <= 10; ++v)
+    colors[v] = blue;
+  colors[5] = colors[12] = green;
+  std::vector<Point3d> points (13);
+  for (std::size_t v = 0; v <= 10; ++v)
+    points[v] = {static_cast<double> (v), 0.0, 0.0};
+  points[11] = {0.0, 5.0, 0.0};
+  points[12] = {10.0, -5.0, 0.0};
+  std::vector<FilteredEdge> graph;
+  for (std::uint32_t v = 0; v < 10; ++v)
+    graph.push_back (
+        {v, v + 1, static_cast<double> (deltaE76 (colors[v], colors[v + 1]))});
+  const std::vector<FilteredEdge> forest = homogeneityForest (13, graph);
+  for (const double limit : {30.0, INF}) {
+    ColorRegions regions = regionsAtThreshold (13, forest, 3.0, 3);
+    const std::vector<std::uint32_t> isolated =
+        mergeSmallRegions (graph, forest, colors, 3.0, 3, limit, regions);
+    EXPECT_EQ (isolated, (std::vector<std::uint32_t>{11, 12}));
+    attachIsolatedPoints (points, colors, isolated, 8, 1, regions);
+    ASSERT_EQ (regions.lifetimes.size(), 2u);
+    EXPECT_EQ (regions.region_of[11], regions.region_of[0]);
+    EXPECT_NE (regions.region_of[12], NO_REGION);
+    if (limit == INF)
+      EXPECT_EQ (regions.region_of[5], regions.region_of[4]); // red is nearer green
+    else
+      EXPECT_EQ (regions.region_of[5], NO_REGION);
   }
 }
 
@@ -201,7 +240,7 @@ TEST (ColorRegions, SmallPatchesTogetherMakeARegion)
   const std::vector<FilteredEdge> forest = homogeneityForest (6, graph);
   ColorRegions regions = regionsAtThreshold (6, forest, 5.0, 4);
   EXPECT_TRUE (regions.lifetimes.empty());
-  mergeSmallRegions (graph, forest, colors, 5.0, 4, regions);
+  mergeSmallRegions (graph, forest, colors, 5.0, 4, INF, regions);
   ASSERT_EQ (regions.lifetimes.size(), 1u);
   for (const std::uint32_t r : regions.region_of)
     EXPECT_EQ (r, 0u);
@@ -265,7 +304,8 @@ TEST (ColorRegions, RegionsAreComponentsOfSimilarAdjacentPatches)
   }
 }
 
-// The automatic threshold: the middle of the longest step of two regions or more.
+// The automatic threshold: the middle of the longest step of two regions or more
+// when it is clear, otherwise of the finest stable one.
 TEST (ColorRegions, ChoosesTheMiddleOfTheLongestStep)
 {
   // Four patches: two merge at 3 (noise), one at 40; the last never. Steps over
@@ -294,6 +334,18 @@ TEST (ColorRegions, ChoosesTheMiddleOfTheLongestStep)
       chooseColorThreshold (gradual, 2.0, 100.0, 1.5, 10.0);
   EXPECT_DOUBLE_EQ (guess.threshold, 10.0);
   EXPECT_FALSE (guess.clear);
+  // Regions of close colours: 4 regions on [2.5, 7), 3 on [7, 11), 2 on [11, 33),
+  // the last a little longer than the first but not clearly: the finest stable
+  // step, the 4 regions, not the 2 left after the close colours merged.
+  const PersistenceDiagram close_colors{
+      {0, 0.0, 2.5}, {0, 0.0, 7.0}, {0, 0.0, 11.0}, {0, 0.0, 33.0}, {0, 0.0, INF}};
+  const ColorThresholdChoice finest =
+      chooseColorThreshold (close_colors, 2.0, 40.0, 1.5, 10.0);
+  EXPECT_EQ (finest.num_regions, 4u);
+  EXPECT_DOUBLE_EQ (finest.low, 2.5);
+  EXPECT_DOUBLE_EQ (finest.high, 7.0);
+  EXPECT_NEAR (finest.threshold, std::sqrt (17.5), 1e-12);
+  EXPECT_FALSE (finest.clear);
   // Two splits of similar length: not clear.
   const PersistenceDiagram twice{{0, 0.0, 4.0}, {0, 0.0, 8.0}, {0, 0.0, INF}};
   const ColorThresholdChoice unclear =

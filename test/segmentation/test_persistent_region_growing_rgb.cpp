@@ -316,20 +316,34 @@ TEST (PersistentRegionGrowingRGB, SmallRegionsAsNoise)
   Normals::Ptr normals (new Normals);
   std::vector<int> truth;
   quadrantCloud (*cloud, *normals, truth, 0.0f, 3);
-  (*cloud)[0].r = 0, (*cloud)[0].g = 255, (*cloud)[0].b = 255; // a cyan speck
+  const pcl::PointXYZRGB quadrant_color = (*cloud)[0];
+  const auto lab = [] (const pcl::PointXYZRGB& p) {
+    return pcl::tda::rgbToLab (p.r, p.g, p.b);
+  };
   RegionGrowing growing;
   growing.setMaxDistance (1.5 * SPACING);
   growing.setMinClusterSize (5);
   growing.setColorSmoothing (false);
-  std::size_t covered = 0;
-  for (const auto& region : grow (growing, cloud))
-    covered += region.indices.size();
-  EXPECT_EQ (covered, cloud->size());
+  const auto covered = [&] {
+    std::size_t count = 0;
+    for (const auto& region : grow (growing, cloud))
+      count += region.indices.size();
+    return count;
+  };
+  // A speck a little off the quadrant's colour joins it.
+  (*cloud)[0].r = static_cast<std::uint8_t> (quadrant_color.r / 2 + 64);
+  const float off = pcl::tda::deltaE76 (lab ((*cloud)[0]), lab (quadrant_color));
+  ASSERT_GT (off, 3.0 * growing.getColorThreshold());
+  ASSERT_LT (off, growing.getMaxMergeColorDifference());
+  EXPECT_EQ (covered(), cloud->size());
+  // A cyan speck, of another colour than every quadrant, is left out, unless the
+  // limit is lifted.
+  (*cloud)[0].r = 0, (*cloud)[0].g = 255, (*cloud)[0].b = 255;
+  EXPECT_EQ (covered(), cloud->size() - 1);
+  growing.setMaxMergeColorDifference (INFINITY);
+  EXPECT_EQ (covered(), cloud->size());
   growing.setMergeSmallRegions (false);
-  covered = 0;
-  for (const auto& region : grow (growing, cloud))
-    covered += region.indices.size();
-  EXPECT_EQ (covered, cloud->size() - 1);
+  EXPECT_EQ (covered(), cloud->size() - 1);
 }
 
 // Bad input: clear errors, no regions.
@@ -351,6 +365,8 @@ TEST (PersistentRegionGrowingRGB, RefusesBadInput)
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setColorThreshold (0.0); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setColorThreshold (-1.0); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setRegionColorThreshold (-1.0); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setMaxMergeColorDifference (0.0); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setMaxMergeColorDifference (NAN); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setImageNeighborRatio (-0.1); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setImageNeighborRatio (INFINITY); }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) {

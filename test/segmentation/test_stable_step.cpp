@@ -1,6 +1,5 @@
-// chooseStableStep(): the step rules of the automatic clustering distance
-// (StepChoice::CLEAR_OR_FINEST) and colour threshold (StepChoice::LONGEST), on counts
-// whose steps are known.
+// chooseStableStep(): the step rule of the automatic clustering distance and colour
+// threshold, on counts whose steps are known.
 
 #include <pcl/tda/segmentation/stable_step.h>
 
@@ -16,7 +15,6 @@ namespace {
 
 using pcl::tda::chooseStableStep;
 using pcl::tda::StableStep;
-using pcl::tda::StepChoice;
 using Events = std::vector<std::pair<double, int>>;
 
 /** Four objects that become whole at 1 and merge pairwise at 2, 3 and 8 (counts 4
@@ -26,10 +24,10 @@ const Events CLOSE_OBJECTS = {
     {1.0, +1}, {1.0, +1}, {1.0, +1}, {1.0, +1}, {2.0, -1}, {3.0, -1}, {8.0, -1}};
 
 StableStep
-choose (const Events& events, StepChoice choice, double floor = 0.5, double max = 100.0)
+choose (const Events& events, double floor = 0.5, double max = 100.0)
 {
   StableStep step;
-  EXPECT_TRUE (chooseStableStep (events, floor, max, 1.5, choice, step));
+  EXPECT_TRUE (chooseStableStep (events, floor, max, 1.5, step));
   return step;
 }
 
@@ -37,7 +35,7 @@ choose (const Events& events, StepChoice choice, double floor = 0.5, double max 
 
 TEST (StableStep, TakesTheFinestStableSplitWhenNoSplitIsClear)
 {
-  const StableStep step = choose (CLOSE_OBJECTS, StepChoice::CLEAR_OR_FINEST);
+  const StableStep step = choose (CLOSE_OBJECTS);
   EXPECT_EQ (step.count, 4u);
   EXPECT_DOUBLE_EQ (step.low, 1.0);
   EXPECT_DOUBLE_EQ (step.high, 2.0);
@@ -49,27 +47,18 @@ TEST (StableStep, TakesTheLongestSplitWhenClear)
   // 3 on [1, 1.6), 2 on [1.6, 10), 1 from 10: the split into 2 is over q times as
   // long (in log) as the split into 3.
   const Events events = {{1.0, +1}, {1.0, +1}, {1.0, +1}, {1.6, -1}, {10.0, -1}};
-  const StableStep step = choose (events, StepChoice::CLEAR_OR_FINEST);
+  const StableStep step = choose (events);
   EXPECT_EQ (step.count, 2u);
   EXPECT_DOUBLE_EQ (step.low, 1.6);
   EXPECT_DOUBLE_EQ (step.high, 10.0);
   EXPECT_TRUE (step.clear);
 }
 
-TEST (StableStep, LongestTakesTheWidestSplit)
-{
-  const StableStep step = choose (CLOSE_OBJECTS, StepChoice::LONGEST);
-  EXPECT_EQ (step.count, 2u);
-  EXPECT_DOUBLE_EQ (step.low, 3.0);
-  EXPECT_DOUBLE_EQ (step.high, 8.0);
-  EXPECT_FALSE (step.clear); // log(8/3) < 1.5 log 2
-}
-
 TEST (StableStep, SplitsShorterThanTheGapRatioAreSkipped)
 {
   // Fragments: 2 on [1, 1.2), then 3 objects on [1.2, 1.3) too short, 2 on [1.3, 4).
   const Events events = {{1.0, +1}, {1.0, +1}, {1.2, +1}, {1.3, -1}, {4.0, -1}};
-  const StableStep step = choose (events, StepChoice::CLEAR_OR_FINEST);
+  const StableStep step = choose (events);
   EXPECT_EQ (step.count, 2u);
   EXPECT_DOUBLE_EQ (step.low, 1.3);
   EXPECT_DOUBLE_EQ (step.high, 4.0);
@@ -78,30 +67,25 @@ TEST (StableStep, SplitsShorterThanTheGapRatioAreSkipped)
 
 TEST (StableStep, OneClusterWhenNoSplitIsStable)
 {
-  // 2 on [1, 1.4) only, then one cluster up to the end: both choices agree.
+  // 2 on [1, 1.4) only, then one cluster up to the end.
   const Events events = {{1.0, +1}, {1.0, +1}, {1.4, -1}};
-  for (const StepChoice choice : {StepChoice::CLEAR_OR_FINEST, StepChoice::LONGEST}) {
-    const StableStep step = choose (events, choice);
-    EXPECT_EQ (step.count, 1u);
-    EXPECT_DOUBLE_EQ (step.low, 1.4);
-    EXPECT_DOUBLE_EQ (step.high, 100.0);
-    EXPECT_TRUE (step.clear); // far longer than the short split
-  }
+  const StableStep step = choose (events);
+  EXPECT_EQ (step.count, 1u);
+  EXPECT_DOUBLE_EQ (step.low, 1.4);
+  EXPECT_DOUBLE_EQ (step.high, 100.0);
+  EXPECT_TRUE (step.clear); // far longer than the short split
 }
 
-TEST (StableStep, LongestCensorsTheStepCutShortAtTheEnd)
+TEST (StableStep, AStepCutShortAtTheEndCountsAsLongAsItIsSeen)
 {
-  // 3 on [1, 2) spans the gap ratio; 2 on [2, 100) is cut short at the end: LONGEST
-  // takes the 3, CLEAR_OR_FINEST the 2, clear even cut short.
+  // 3 on [1, 2) spans the gap ratio; 2 on [2, 100) is cut short at the end but is
+  // still the longest split seen, and clearly so: it is taken.
   const Events events = {{1.0, +1}, {1.0, +1}, {1.0, +1}, {2.0, -1}};
-  EXPECT_EQ (choose (events, StepChoice::LONGEST).count, 3u);
-  EXPECT_DOUBLE_EQ (choose (events, StepChoice::LONGEST).high, 2.0);
-  EXPECT_EQ (choose (events, StepChoice::CLEAR_OR_FINEST).count, 2u);
-  // With the 3 too short, the step cut short is taken after all.
-  const Events short_split = {{1.0, +1}, {1.0, +1}, {1.0, +1}, {1.2, -1}};
-  const StableStep step = choose (short_split, StepChoice::LONGEST);
+  const StableStep step = choose (events);
   EXPECT_EQ (step.count, 2u);
-  EXPECT_DOUBLE_EQ (step.low, 1.2);
+  EXPECT_DOUBLE_EQ (step.low, 2.0);
+  EXPECT_DOUBLE_EQ (step.high, 100.0);
+  EXPECT_TRUE (step.clear);
 }
 
 TEST (StableStep, IndependentOfTheEventOrderAndOfTheUnit)
@@ -114,20 +98,17 @@ TEST (StableStep, IndependentOfTheEventOrderAndOfTheUnit)
     Events scaled = events;
     for (auto& event : scaled)
       event.first *= unit;
-    for (const StepChoice choice : {StepChoice::CLEAR_OR_FINEST, StepChoice::LONGEST}) {
-      const StableStep reference = choose (CLOSE_OBJECTS, choice);
-      const StableStep step = choose (scaled, choice, 0.5 * unit, 100.0 * unit);
-      EXPECT_EQ (step.count, reference.count);
-      EXPECT_NEAR (step.low, reference.low * unit, 1e-12 * unit);
-      EXPECT_NEAR (step.high, reference.high * unit, 1e-12 * unit);
-      EXPECT_EQ (step.clear, reference.clear);
-    }
+    const StableStep reference = choose (CLOSE_OBJECTS);
+    const StableStep step = choose (scaled, 0.5 * unit, 100.0 * unit);
+    EXPECT_EQ (step.count, reference.count);
+    EXPECT_NEAR (step.low, reference.low * unit, 1e-12 * unit);
+    EXPECT_NEAR (step.high, reference.high * unit, 1e-12 * unit);
+    EXPECT_EQ (step.clear, reference.clear);
   }
 }
 
 TEST (StableStep, NoPositiveCount)
 {
   StableStep step;
-  EXPECT_FALSE (
-      chooseStableStep ({}, 1.0, 2.0, 1.5, StepChoice::CLEAR_OR_FINEST, step));
+  EXPECT_FALSE (chooseStableStep ({}, 1.0, 2.0, 1.5, step));
 }

@@ -69,41 +69,55 @@ regionsAtThreshold (std::size_t num_vertices,
  * cover the cloud (Eq 4.1): every component of the \a forest edges of value <=
  * \a threshold that is smaller than \a min_size joins the adjacent region (a
  * neighbour by any edge of the \a graph) of the most similar mean colour, by Delta E
- * of the mean CIELAB colours. Small components are taken smallest first (equal
- * sizes by smallest vertex) and join a region, or another small component, which
- * then grows; a component with no neighbour stays out (NO_REGION). Unlike
- * pcl::RegionGrowing, which merges a small region into the nearest one by distance
- * alone, the choice is made by colour.
+ * of the mean CIELAB colours, if that difference is at most \a max_difference.
+ * Small components are taken smallest first (equal sizes by smallest vertex) and
+ * join a region, or another small component, which then grows; a component with no
+ * neighbour, or farther than \a max_difference from all of them (a speck of
+ * another colour, too small to be a region), stays out (NO_REGION), unless smaller
+ * ones join it up to the minimum size. Unlike pcl::RegionGrowingRGB, which merges a
+ * small region into the nearest one by distance alone, whatever its colour, the
+ * choice is made by colour.
  * \param[in] graph the homogeneity graph (all its edges, also those of infinite
  * value: neighbours that are not similar are still neighbours)
  * \param[in] forest homogeneityForest() of the graph
  * \param[in] colors CIELAB colour of every vertex
+ * \param[in] threshold the colour threshold of the regions
+ * \param[in] min_size fewest points of a region
+ * \param[in] max_difference the largest Delta E76 between the mean colours of a
+ * small component and the region it joins (infinity: always the most similar)
  * \param[in,out] regions the regions of regionsAtThreshold() with the same threshold
- * and \a min_size; on return every vertex with a neighbour has a region, and the
- * regions are numbered again by decreasing size */
-void
+ * and \a min_size; on return every vertex with a neighbour within
+ * \a max_difference has a region, and the regions are numbered again by decreasing
+ * size
+ * \return the vertices of the small components with no neighbour (isolated points
+ * and islands), in increasing order, for attachIsolatedPoints() */
+std::vector<std::uint32_t>
 mergeSmallRegions (const std::vector<FilteredEdge>& graph,
                    const std::vector<FilteredEdge>& forest,
                    const std::vector<LabColor>& colors,
                    double threshold,
                    std::size_t min_size,
+                   double max_difference,
                    ColorRegions& regions);
 
 /** \brief Post-processing for the points that no edge joins to a region (isolated
- * points and small islands, farther than the radius from every region): each joins
- * the region of the most similar in colour (Delta E76) of its \a k nearest points
- * that have a region, found by a k-d tree (thesis Sec 4.2.5: a nearest neighbours
- * query from the small region). The regions keep their numbers and lifetimes.
+ * points and small islands, farther than the radius from every region, as
+ * mergeSmallRegions() returns them): each joins the region of the most similar in
+ * colour (Delta E76) of its \a k nearest points that have a region, found by a k-d
+ * tree (thesis Sec 4.2.5: a nearest neighbours query from the small region). The
+ * regions keep their numbers and lifetimes.
  * \param[in] points position of every vertex
  * \param[in] colors CIELAB colour of every vertex
+ * \param[in] isolated the vertices to attach (without a region)
  * \param[in] k the nearest points considered (>= 1)
  * \param[in] threads OpenMP threads of the search (0: OpenMP's default); the result
  * does not depend on them
- * \param[in,out] regions the regions; on return every vertex has one, unless no
- * vertex has any */
+ * \param[in,out] regions the regions; on return every \a isolated vertex has one,
+ * unless no vertex has any */
 void
 attachIsolatedPoints (const std::vector<Point3d>& points,
                       const std::vector<LabColor>& colors,
+                      const std::vector<std::uint32_t>& isolated,
                       std::size_t k,
                       unsigned int threads,
                       ColorRegions& regions);
@@ -142,7 +156,7 @@ mergeSimilarRegions (const ColorRegions& patches,
 struct ColorThresholdChoice {
   /** \brief The chosen threshold (Delta E). */
   double threshold = 0.0;
-  /** \brief The longest step [low, high) of the region count (the threshold is its
+  /** \brief The step [low, high) of the region count taken (the threshold is its
    * middle when it spans the gap ratio); both 0 when there is none. */
   double low = 0.0;
   double high = 0.0;
@@ -156,10 +170,9 @@ struct ColorThresholdChoice {
 
 /** \brief Chooses a colour threshold from the region barcode (ColorRegions::bars):
  * the number of bars alive, i.e. of regions, is a step function of the threshold;
- * the step of chooseStableStep() (StepChoice::LONGEST) over [\a floor,
- * \a max_threshold] (a step cut short by max_threshold counts only when no other is
- * long enough) is taken when it
- * spans a factor of at least \a gap_ratio, and the threshold is its geometric middle
+ * the step of chooseStableStep() over [\a floor, \a max_threshold] (the longest
+ * split when it is clear, otherwise the finest stable split) is taken when it spans
+ * a factor of at least \a gap_ratio, and the threshold is its geometric middle
  * sqrt(low high). When no step does (the number of regions falls gradually, as on
  * scans with many shades), the threshold is \a fallback (or max_threshold when
  * lower), and the choice is not clear.

@@ -44,7 +44,8 @@ namespace tda {
  *    neighbour by mean colour (Sec 4.2.5, mergeSmallRegions()), and points farther
  *    than the radius from every region join the most similar of their nearest
  *    region points (attachIsolatedPoints()), so that the regions cover the cloud
- *    (Eq 4.1); setMergeSmallRegions(false) leaves both out instead.
+ *    (Eq 4.1), except specks of another colour (setMaxMergeColorDifference());
+ *    setMergeSmallRegions(false) leaves all of them out instead.
  * 2. Regions: adjacent patches (joined by an edge whose normals agree) are valued
  *    by the Delta E of their mean colours; the components of the pairs within the
  *    region colour threshold (setRegionColorThreshold(), 0: off) are the regions
@@ -111,6 +112,10 @@ public:
   static constexpr double DEFAULT_AUTO_MIN_COLOR_THRESHOLD = 2.3;
   /** \brief Default of setAutoGapRatio(). */
   static constexpr double DEFAULT_GAP_RATIO = 1.5;
+  /** \brief Default of setMaxMergeColorDifference(), in Delta E76: colours this far
+   * apart are different colours to anyone (the white and the red of a label), while
+   * the fragments that colour noise breaks off a region stay well within it. */
+  static constexpr double DEFAULT_MAX_MERGE_COLOR_DIFFERENCE = 30.0;
   /** \brief Nearest region points a point far from every region chooses from
    * (attachIsolatedPoints()). */
   static constexpr std::size_t ISOLATED_NEIGHBORS = 8;
@@ -311,6 +316,25 @@ public:
     return merge_small_regions_;
   }
 
+  /** \brief Sets the largest Delta E76 between a component under the minimum size
+   * and the region it joins (default DEFAULT_MAX_MERGE_COLOR_DIFFERENCE; infinity
+   * joins every one to its most similar neighbour, as pcl::RegionGrowingRGB joins
+   * them to the nearest): a smaller patch farther than this from every neighbouring
+   * region, a speck of another colour too small to be a region, is left out (no
+   * region, label 0 in pcl_tda_regions) rather than painted into a region of
+   * another colour. Used when setMergeSmallRegions(true). */
+  void
+  setMaxMergeColorDifference (double delta_e)
+  {
+    max_merge_color_difference_ = delta_e;
+  }
+
+  double
+  getMaxMergeColorDifference () const
+  {
+    return max_merge_color_difference_;
+  }
+
   /** \brief Chooses the filtration of getPersistenceDiagram() (default
    * Filtration::COLOR). */
   void
@@ -347,12 +371,13 @@ public:
    * region colour threshold is then the upper bound of the search. Every patch has a
    * bar from 0 to the threshold at which it joins a larger patch, so the number of
    * regions is a step function of the threshold; the longest of its steps (by
-   * log(high / low)) with two regions or more is taken when it spans a factor of at
-   * least the gap ratio, and the threshold is its geometric middle
-   * (chooseColorThreshold()): the regions that stay the same over the widest range
-   * of thresholds. When no step is that long, DEFAULT_REGION_COLOR_THRESHOLD is
-   * used, with a PCL_WARN. Only ratios enter; deterministic and independent of the
-   * input order and the number of threads. */
+   * log(high / low)) with two regions or more is taken when it is clear (at least
+   * the gap ratio times as long as every other), otherwise the first that spans a
+   * factor of at least the gap ratio, and the threshold is its geometric middle
+   * (chooseColorThreshold()): regions that stay the same over a wide range of
+   * thresholds, not yet merged with regions of a close colour. When no step is that
+   * long, DEFAULT_REGION_COLOR_THRESHOLD is used, with a PCL_WARN. Only ratios enter;
+   * deterministic and independent of the input order and the number of threads. */
   void
   setAutoColorThreshold (bool enabled)
   {
@@ -509,6 +534,7 @@ private:
   pcl::uindex_t min_pts_per_cluster_ = 1;
   pcl::uindex_t max_pts_per_cluster_ = std::numeric_limits<pcl::uindex_t>::max();
   bool merge_small_regions_ = true;
+  double max_merge_color_difference_ = DEFAULT_MAX_MERGE_COLOR_DIFFERENCE;
   Filtration filtration_ = Filtration::COLOR;
   unsigned int filtration_steps_ = 0;
   bool auto_color_threshold_ = false;

@@ -18,35 +18,22 @@ struct StableStep {
   bool clear = false;
 };
 
-/** \brief Which step of a count of two or more chooseStableStep() takes. */
-enum class StepChoice {
-  /** \brief The longest step when it is clear (at least q times as long, in log, as
-   * every other step of a count of two or more), otherwise the earliest step that
-   * spans a factor of at least the gap ratio q: the finest split that is stable.
-   * Used for the clustering distance: objects that stand close together merge at
-   * the later steps, which may well be a little longer than the step where they are
-   * apart. */
-  CLEAR_OR_FINEST,
-  /** \brief The longest step; a step that ends at the end of the scales, cut short
-   * so that its true length is unknown, only when no other step spans the gap
-   * ratio. Used for the colour threshold. */
-  LONGEST
-};
-
 /** \brief The automatic choice of the clustering distance and of the region colour
  * threshold: a step of a count of components over a scale that is stable over a
  * wide range of scales. The count starts at 0 and changes by the \a events (scale,
  * +1 or -1); its steps over [\a floor, \a max_scale) are measured on a logarithmic
- * scale, log(high / low), so that only ratios of scales enter. The step of a count
- * of two or more that \a choice names is taken when it spans a factor of at least
- * \a gap_ratio; otherwise the longest step of a count of one, if any, and
- * otherwise the longest step of a count of two or more. Of equally long steps, the
- * earliest wins.
+ * scale, log(high / low), so that only ratios of scales enter. Of the steps of a
+ * count of two or more (splits), the longest is taken when it is clear (at least
+ * \a gap_ratio times as long, in log, as every other split), otherwise the earliest
+ * that spans a factor of at least \a gap_ratio: the finest split that is stable.
+ * Close objects, and regions of close colours, merge at the later steps, which may
+ * well be a little longer than the step where they are apart. When no split spans
+ * \a gap_ratio, the longest step of a count of one, if any, and otherwise the
+ * longest split. Of equally long steps, the earliest wins.
  * \param[in] events the changes of the count, in any order
  * \param[in] floor the smallest scale (> 0)
  * \param[in] max_scale the end of the scales (> floor)
  * \param[in] gap_ratio the ratio q (> 1)
- * \param[in] choice which step of a count of two or more is taken
  * \param[out] step the chosen step
  * \return false when no step has a positive count */
 bool
@@ -54,7 +41,6 @@ chooseStableStep (std::vector<std::pair<double, int>> events,
                   double floor,
                   double max_scale,
                   double gap_ratio,
-                  StepChoice choice,
                   StableStep& step);
 
 } // namespace tda

@@ -76,6 +76,13 @@ PersistentRegionGrowingRGB<PointT, NormalT>::checkParameters() const
                region_color_threshold_);
     return false;
   }
+  if (!(max_merge_color_difference_ > 0.0)) {
+    PCL_ERROR ("[pcl::tda::%s::extract] The max merge colour difference must be a "
+               "positive Delta E (infinity: no limit), not %g.\n",
+               name,
+               max_merge_color_difference_);
+    return false;
+  }
   if (auto_color_threshold_ && !(gap_ratio_ > 1.0 && std::isfinite (gap_ratio_))) {
     PCL_ERROR ("[pcl::tda::%s::extract] The auto gap ratio must be a finite number "
                "above 1, not %g.\n",
@@ -252,10 +259,20 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
   ColorRegions found = regionsAtThreshold (n, forest, threshold, min_pts_per_cluster_);
   region_barcode_ = found.bars;
   if (merge_small_regions_) {
-    mergeSmallRegions (
-        graph, forest, vertices.colors, threshold, min_pts_per_cluster_, found);
-    attachIsolatedPoints (
-        vertices.points, vertices.colors, ISOLATED_NEIGHBORS, threads_, found);
+    const std::vector<std::uint32_t> isolated =
+        mergeSmallRegions (graph,
+                           forest,
+                           vertices.colors,
+                           threshold,
+                           min_pts_per_cluster_,
+                           max_merge_color_difference_,
+                           found);
+    attachIsolatedPoints (vertices.points,
+                          vertices.colors,
+                          isolated,
+                          ISOLATED_NEIGHBORS,
+                          threads_,
+                          found);
   }
 
   // The second: adjacent patches of similar mean colour.
@@ -275,8 +292,8 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
       auto_threshold_is_clear_ = choice.clear;
       if (!choice.clear)
         PCL_WARN (
-            "[pcl::tda::%s::extract] The region barcode shows no clear gap (its "
-            "longest step: %zu regions from Delta E %g to %g): the automatic "
+            "[pcl::tda::%s::extract] The region barcode shows no clear gap (the "
+            "step taken: %zu regions from Delta E %g to %g): the automatic "
             "region colour threshold %g is a guess. Check the barcode, or set the "
             "threshold.\n",
             name,
