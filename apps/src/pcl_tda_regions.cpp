@@ -74,7 +74,9 @@ printHelp (const char* program)
               "are used, or\n                  estimated from the neighbours within "
               "the radius when it has none\n");
   print_info ("    -min N      = smallest region, in points; smaller ones join their "
-              "most similar\n                  neighbour (default %u)\n",
+              "most similar\n                  neighbour, or get label 0 when its "
+              "colour is over Delta E %g\n                  from theirs (default %u)\n",
+              ToolRegionGrowing::DEFAULT_MAX_MERGE_COLOR_DIFFERENCE,
               RegionSettings{}.min_size);
   print_info ("    -memory M   = refuse neighbour graphs over M MiB (default: half of "
               "the memory)\n");
@@ -275,10 +277,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
       std::count_if (labelled.begin(), labelled.end(), [] (const auto& point) {
         return point.label == 0;
       }));
-  if (in_no_region > 0)
-    print_info ("  %zu points in no region (label 0): non-finite, or specks of "
-                "another colour under %zu points\n",
-                in_no_region,
+  const std::size_t in_specks = in_no_region - growing.getNumSkippedPoints();
+  if (in_specks > 0)
+    print_info ("  %s in no region (label 0): specks of another colour under %zu "
+                "points\n",
+                pcl::tda::countOf (in_specks, "point").c_str(),
                 static_cast<std::size_t> (settings.min_size));
 
   console.beginStep ("Saving", options.output);

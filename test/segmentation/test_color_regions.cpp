@@ -312,13 +312,19 @@ TEST (ColorRegions, ChoosesTheMiddleOfTheLongestStep)
   // [2, 100]: 3 regions [2, 3), 2 regions [3, 40), 1 region [40, 100).
   const PersistenceDiagram bars{
       {0, 0.0, 3.0}, {0, 0.0, 40.0}, {0, 0.0, INF}, {0, 0.0, 1.0}};
-  const ColorThresholdChoice choice =
-      chooseColorThreshold (bars, 2.0, 100.0, 1.5, 10.0);
-  EXPECT_EQ (choice.num_regions, 2u);
-  EXPECT_DOUBLE_EQ (choice.low, 3.0);
-  EXPECT_DOUBLE_EQ (choice.high, 40.0);
-  EXPECT_NEAR (choice.threshold, std::sqrt (120.0), 1e-12);
-  EXPECT_TRUE (choice.clear);
+  // The step taken and its middle.
+  const auto expectStep = [] (const ColorThresholdChoice& choice,
+                              std::size_t num_regions,
+                              double low,
+                              double high,
+                              bool clear) {
+    EXPECT_EQ (choice.num_regions, num_regions);
+    EXPECT_DOUBLE_EQ (choice.low, low);
+    EXPECT_DOUBLE_EQ (choice.high, high);
+    EXPECT_NEAR (choice.threshold, std::sqrt (low * high), 1e-12);
+    EXPECT_EQ (choice.clear, clear);
+  };
+  expectStep (chooseColorThreshold (bars, 2.0, 100.0, 1.5, 10.0), 2, 3.0, 40.0, true);
   // No step of two regions long enough: the one-region step.
   const PersistenceDiagram close{{0, 0.0, 2.2}, {0, 0.0, INF}};
   const ColorThresholdChoice whole =
@@ -339,13 +345,8 @@ TEST (ColorRegions, ChoosesTheMiddleOfTheLongestStep)
   // step, the 4 regions, not the 2 left after the close colours merged.
   const PersistenceDiagram close_colors{
       {0, 0.0, 2.5}, {0, 0.0, 7.0}, {0, 0.0, 11.0}, {0, 0.0, 33.0}, {0, 0.0, INF}};
-  const ColorThresholdChoice finest =
-      chooseColorThreshold (close_colors, 2.0, 40.0, 1.5, 10.0);
-  EXPECT_EQ (finest.num_regions, 4u);
-  EXPECT_DOUBLE_EQ (finest.low, 2.5);
-  EXPECT_DOUBLE_EQ (finest.high, 7.0);
-  EXPECT_NEAR (finest.threshold, std::sqrt (17.5), 1e-12);
-  EXPECT_FALSE (finest.clear);
+  expectStep (
+      chooseColorThreshold (close_colors, 2.0, 40.0, 1.5, 10.0), 4, 2.5, 7.0, false);
   // Two splits of similar length: not clear.
   const PersistenceDiagram twice{{0, 0.0, 4.0}, {0, 0.0, 8.0}, {0, 0.0, INF}};
   const ColorThresholdChoice unclear =
