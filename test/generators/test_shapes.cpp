@@ -1,6 +1,7 @@
 // Tests of the shapes with known topology: determinism, exact counts, distances to
 // the surface, and the Betti numbers Ripser finds around the suggested radius.
 
+#include <pcl/tda/common/diagram_io.h>
 #include <pcl/tda/generators/shapes.h>
 #include <pcl/exceptions.h>
 
@@ -16,7 +17,6 @@
 #include <functional>
 #include <limits>
 #include <map>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -109,14 +109,8 @@ shapeCases ()
            SphereParameters().num_points}};
 }
 
-/** A persistence interval as printed by Ripser; death is infinity for [b, ). */
-struct Interval {
-  int dim;
-  double birth, death;
-};
-
 /** Runs Ripser on the cloud up to threshold and returns its intervals. */
-std::vector<Interval>
+pcl::tda::PersistenceDiagram
 runRipser (const Cloud& cloud, double threshold, const std::string& folder)
 {
   const std::string input = folder + "/points.txt";
@@ -131,33 +125,15 @@ runRipser (const Cloud& cloud, double threshold, const std::string& folder)
                               " --format point-cloud --dim 1 --threshold " +
                               std::to_string (threshold) + " " + input + " > " + output;
   EXPECT_EQ (0, std::system (command.c_str())) << command;
-  std::ifstream file (output);
-  std::vector<Interval> intervals;
-  const std::regex header (R"(persistence intervals in dim (\d+):)");
-  const std::regex interval (R"(\s*\[([^,]+),\s*([^)]*)\))");
-  int dim = -1;
-  std::smatch match;
-  for (std::string line; std::getline (file, line);) {
-    if (std::regex_match (line, match, header))
-      dim = std::stoi (match[1]);
-    else if (dim >= 0 && std::regex_match (line, match, interval)) {
-      const std::string death = match[2];
-      intervals.push_back ({dim,
-                            std::stod (match[1]),
-                            death.find_first_not_of (' ') == std::string::npos
-                                ? std::numeric_limits<double>::infinity()
-                                : std::stod (death)});
-    }
-  }
-  return intervals;
+  return pcl::tda::loadDiagram (output);
 }
 
 int
-bettiAt (const std::vector<Interval>& intervals, int dim, double r)
+bettiAt (const pcl::tda::PersistenceDiagram& intervals, int dim, double r)
 {
-  return static_cast<int> (
-      std::count_if (intervals.begin(), intervals.end(), [&] (const Interval& i) {
-        return i.dim == dim && i.birth <= r && r < i.death;
+  return static_cast<int> (std::count_if (
+      intervals.begin(), intervals.end(), [&] (const pcl::tda::PersistenceInterval& i) {
+        return i.dimension == dim && i.birth <= r && r < i.death;
       }));
 }
 
@@ -253,14 +229,14 @@ TEST (SyntheticShapes, RipserFindsTheBettiNumbersAroundTheSuggestedRadius)
       SCOPED_TRACE (shape.name + " seed " + std::to_string (seed));
       const SyntheticShape s = shape.generate (0.01f, seed);
       const double r = s.suggested_radius;
-      const std::vector<Interval> intervals =
+      const pcl::tda::PersistenceDiagram intervals =
           runRipser (*s.cloud, 1.3 * r, folder.path());
       ASSERT_FALSE (intervals.empty());
       EXPECT_EQ (s.beta0, bettiAt (intervals, 0, r));
       EXPECT_EQ (s.beta1, bettiAt (intervals, 1, r));
       // Robust: right on the whole range [0.75 r, 1.3 r), checked at every event.
       std::vector<double> radii = {0.75 * r};
-      for (const Interval& i : intervals)
+      for (const pcl::tda::PersistenceInterval& i : intervals)
         for (const double v : {i.birth, i.death})
           if (v > 0.75 * r && v < 1.3 * r)
             radii.push_back (v);
