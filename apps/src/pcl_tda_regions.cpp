@@ -273,11 +273,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   }
   if (regions.size() > MAX_LINES)
     print_info ("  ... and %zu smaller regions\n", regions.size() - MAX_LINES);
-  const auto in_no_region = static_cast<std::size_t> (
-      std::count_if (labelled.begin(), labelled.end(), [] (const auto& point) {
-        return point.label == 0;
-      }));
-  const std::size_t in_specks = in_no_region - growing.getNumSkippedPoints();
+  std::size_t in_regions = 0;
+  for (const auto& region : regions)
+    in_regions += region.indices.size();
+  const std::size_t in_specks =
+      labelled.size() - in_regions - growing.getNumSkippedPoints();
   if (in_specks > 0)
     print_info ("  %s in no region (label 0): specks of another colour under %zu "
                 "points\n",

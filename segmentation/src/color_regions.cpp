@@ -285,11 +285,13 @@ attachIsolatedPoints (const std::vector<Point3d>& points,
                       unsigned int threads,
                       ColorRegions& regions)
 {
+  if (isolated.empty())
+    return;
   std::vector<std::uint32_t> labelled;
   for (std::uint32_t v = 0; v < points.size(); ++v)
     if (regions.region_of[v] != NO_REGION)
       labelled.push_back (v);
-  if (isolated.empty() || labelled.empty())
+  if (labelled.empty())
     return;
   const std::size_t num_neighbors = std::min (k, labelled.size());
   std::vector<std::uint32_t> neighbors;
