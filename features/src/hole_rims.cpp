@@ -7,11 +7,17 @@
 #include <algorithm>
 #include <cmath>
 #include <tuple>
+#include <utility>
 
 namespace pcl {
 namespace tda {
 
 namespace {
+
+/** How far rimBand() erodes, then widens, a hole's empty region, in spacings: slivers
+ * of it narrower than twice this go. Half a spacing: a gap between two neighbouring
+ * points at the hole's edge, not the hole. */
+constexpr double EMPTY_OPENING_PER_SPACING = 0.5;
 
 /** The plane of the surface at \a v: fitted to v and its neighbours. */
 Eigen::Vector3f
@@ -215,19 +221,34 @@ rimBand (const std::vector<HoleRim>& holes,
     high += Eigen::Vector2d::Constant (margin);
     const double cell = std::max (spacing / 4.0, (high - low).maxCoeff() / 256.0);
     const DistanceGrid emptiness (low, high, cell, projected);
-    std::vector<Eigen::Vector2d> empty;
+    std::vector<std::pair<Eigen::Vector2d, double>> clear_cells; // centre, clearance
+    double deepest = 0.0;
     for (int iy = 0; iy < emptiness.height(); ++iy)
       for (int ix = 0; ix < emptiness.width(); ++ix)
         if (emptiness.distance (ix, iy) >= spacing &&
-            polygon.contains (emptiness.center (ix, iy)))
-          empty.push_back (emptiness.center (ix, iy));
+            polygon.contains (emptiness.center (ix, iy))) {
+          clear_cells.emplace_back (emptiness.center (ix, iy),
+                                    emptiness.distance (ix, iy));
+          deepest = std::max (deepest, clear_cells.back().second);
+        }
+    // The empty region, opened: the places at least `clearance` from every point
+    // (the region eroded by clearance - spacing), widened again by as much when the
+    // band is measured. Where two points at the edge stand a little apart, the
+    // region reaches out between them; the opening cuts such slivers, which would
+    // otherwise carry the band that far beyond the edge.
+    const double clearance =
+        std::clamp (deepest, spacing, (1.0 + EMPTY_OPENING_PER_SPACING) * spacing);
+    std::vector<Eigen::Vector2d> empty;
+    for (const auto& [center, distance] : clear_cells)
+      if (distance >= clearance)
+        empty.push_back (center);
     // A point is in the band when it is within the band width of the hole's edge,
     // which lies about half a spacing outside the empty region.
     const DistanceGrid to_empty (low, high, cell, empty);
+    const double reach = band_width + spacing / 2.0 + (clearance - spacing);
     for (std::size_t i = 0; i < near.size(); ++i) {
       int ix, iy;
-      if (to_empty.cellOf (projected[i], ix, iy) &&
-          to_empty.distance (ix, iy) <= band_width + spacing / 2.0)
+      if (to_empty.cellOf (projected[i], ix, iy) && to_empty.distance (ix, iy) <= reach)
         band[near[i]] = static_cast<std::uint32_t> (h + 1);
     }
   }

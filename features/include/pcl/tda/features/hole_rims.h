@@ -98,7 +98,10 @@ cycleSparseness (const std::vector<MinimalCycle>& cycles,
  * the rim at least \a spacing from every point. The hole's edge lies about half a
  * spacing outside that region (measured on generated holes); a point within two
  * edges of the rim is in the band when the empty region is within
- * \a band_width + \a spacing / 2 of it.
+ * \a band_width + \a spacing / 2 of it. The region is opened first (eroded, then
+ * widened, by half a spacing, or less in a hole too narrow for it): where two points
+ * at the edge stand a little apart, it reaches out between them, and would carry the
+ * band that far beyond the edge.
  * \param[in] holes the holes (rims as vertex ids)
  * \param[in] positions the position of every vertex
  * \param[in] adjacency the neighbours of every vertex (all edges of the complex)
