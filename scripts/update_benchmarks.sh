@@ -206,7 +206,9 @@ section_holes() {
   echo "0.1, 0.25 h): per-point precision, recall and F1 of the rim band (outer border"
   echo "left out), hole-level recall and precision of our rims, and time. Then thesis"
   echo "Sec 5.6 (Tables 5.1-5.3 analogue) on the real scans with 10-30 % of the points"
-  echo "removed at random."
+  echo "removed at random. Filling (\`HoleFilling\`, surface mode) of the holes found:"
+  echo "against the samples the generated holes cut out, and on the real scans against"
+  echo "the points removed."
   echo
   holes=$("$bin/pcl_tda_bench_holes" "$data" -scenes 4 -runs 3) || {
     echo "update_benchmarks: failed: pcl_tda_bench_holes" >&2
@@ -226,7 +228,11 @@ section_holes() {
   echo "holes above). Around: a rim passes within 1.5 R of the centre and holds it inside,"
   echo "in the rim's plane (the cut hole joined a larger empty region of the scan). Rims"
   echo "reported: all rims, the scans' own holes and gaps included (not scored). Time:"
-  echo "median over the seeds."
+  echo "median over the seeds. Filling: \`HoleFilling\` (surface mode) in the holes ours"
+  echo "found; new points in the cut holes: those within R + h of a cut centre; to removed:"
+  echo "the median distance from such a point to the nearest point the cut removed (the"
+  echo "true surface), in h; removed covered: the removed points with a new point within"
+  echo "1.5 h (holes not found count as not covered)."
   echo
   "$bin/pcl_tda_bench_holes_cut" "$data" -seeds 3 -holes 3 || {
     echo "update_benchmarks: failed: pcl_tda_bench_holes_cut" >&2

@@ -27,6 +27,7 @@
 #include <pcl/point_types.h>
 
 #include "bench_command_line.h"
+#include "bench_hole_filling.h"
 #include "bench_statistics.h"
 #include <omp.h>
 
@@ -42,8 +43,10 @@
 
 namespace {
 
+using pcl::tda::bench::fillHoles;
 using pcl::tda::bench::mean;
 using pcl::tda::bench::median;
+using pcl::tda::bench::nearestDistances;
 using pcl::tda::bench::seconds;
 
 using Cloud = pcl::PointCloud<pcl::PointXYZ>;
@@ -276,6 +279,25 @@ struct HoleCounts {
   std::size_t truth = 0, found = 0, matched = 0, findable = 0;
 };
 
+/** Per true hole of \a surface, whether a rim of \a found matches it (its centroid
+ * within half the hole's radius of the hole's centre; each rim matches one hole). */
+std::vector<bool>
+matchedTrueHoles (const std::vector<pcl::tda::HoleRim>& found,
+                  const pcl::tda::HoleSurface& surface)
+{
+  std::vector<bool> taken (surface.holes.size(), false);
+  for (const pcl::tda::HoleRim& rim : found) {
+    for (std::size_t j = 0; j < surface.holes.size(); ++j) {
+      const auto& hole = surface.holes[j];
+      if (!taken[j] && (rim.centroid - hole.center).norm() <= 0.5f * hole.radius) {
+        taken[j] = true;
+        break;
+      }
+    }
+  }
+  return taken;
+}
+
 HoleCounts
 matchHoles (const std::vector<pcl::tda::HoleRim>& found,
             const pcl::tda::HoleSurface& surface)
@@ -285,19 +307,56 @@ matchHoles (const std::vector<pcl::tda::HoleRim>& found,
   // Homology has k - 1 hole classes on a closed surface.
   counts.findable = surface.closed && counts.truth ? counts.truth - 1 : counts.truth;
   counts.found = found.size();
-  std::vector<bool> taken (surface.holes.size(), false);
-  for (const pcl::tda::HoleRim& rim : found) {
-    for (std::size_t j = 0; j < surface.holes.size(); ++j) {
-      const auto& hole = surface.holes[j];
-      if (!taken[j] && (rim.centroid - hole.center).norm() <= 0.5f * hole.radius) {
-        taken[j] = true;
-        ++counts.matched;
-        break;
-      }
-    }
-  }
+  const std::vector<bool> matched = matchedTrueHoles (found, surface);
+  counts.matched =
+      static_cast<std::size_t> (std::count (matched.begin(), matched.end(), true));
   return counts;
 }
+
+/** The filling of the holes ours found, against the samples the holes cut out
+ * (HoleSurface::cut) and against HoleBoundaryEstimation run again on the filled
+ * cloud. */
+struct FillingScore {
+  std::size_t new_points = 0;
+  /** Of each new point to the nearest cut sample, in units of h. */
+  std::vector<double> distances;
+  /** Cut samples of the found holes, and those with a new point within 1.5 h. */
+  std::size_t cut_samples = 0, covered = 0;
+  /** Found holes, and those found again on the filled cloud. */
+  std::size_t filled = 0, found_again = 0;
+
+  void
+  add (const pcl::tda::HoleSurface& surface, const Cloud::Ptr& cloud, const Ours& ours)
+  {
+    const Cloud::Ptr added = fillHoles (cloud, ours.getHoles());
+    new_points += added->size();
+    const std::vector<bool> found = matchedTrueHoles (ours.getHoles(), surface);
+    Cloud::Ptr cut (new Cloud), cut_of_found (new Cloud);
+    for (const auto& p : *surface.cut) {
+      cut->push_back ({p.x, p.y, p.z});
+      if (found[p.label - 1])
+        cut_of_found->push_back ({p.x, p.y, p.z});
+    }
+    cut_samples += cut_of_found->size();
+    if (added->empty() || cut->empty())
+      return;
+    const double h = surface.spacing;
+    for (const double d : nearestDistances (*added, cut))
+      distances.push_back (d / h);
+    for (const double d : nearestDistances (*cut_of_found, added))
+      covered += d <= 1.5 * h;
+    Cloud::Ptr filled_cloud (new Cloud (*cloud));
+    *filled_cloud += *added;
+    Ours again;
+    bool failed = false;
+    runOurs (filled_cloud, again, failed);
+    const std::vector<bool> found_after = matchedTrueHoles (again.getHoles(), surface);
+    for (std::size_t j = 0; j < found.size(); ++j) {
+      filled += found[j];
+      found_again += found[j] && found_after[j];
+    }
+  }
+};
 
 /** One generated cloud and its truth. */
 struct Scene {
@@ -345,6 +404,7 @@ struct GroupResult {
   Row ours, tutorial, best;
   std::string best_setting;
   HoleCounts holes;
+  FillingScore filling;
   /** True holes matched on each surface, e.g. "3 3 2 3". */
   std::string matched_per_surface;
   std::size_t mismatches = 0, failures = 0;
@@ -441,6 +501,7 @@ benchGroup (pcl::tda::HoleSurfaceKind kind, double noise, const Options& options
     group.holes.findable += counts.findable;
     group.matched_per_surface += (group.matched_per_surface.empty() ? "" : " ") +
                                  std::to_string (counts.matched);
+    group.filling.add (scene.surface, scene.cloud, ours);
 
     times.clear();
     for (int run = 0; run < options.runs; ++run)
@@ -482,11 +543,21 @@ struct ScanResult {
   double removed = 0.0;
   std::size_t points = 0, persistent = 0, beta1 = 0, holes = 0;
   std::size_t ours_flagged = 0, pcl_flagged = 0;
+  std::size_t edges = 0, new_points = 0;
+  std::uint64_t triangles = 0;
+  /** Median distance of the new points of HoleFilling to the nearest removed point,
+   * in spacings (radius / AUTO_RADIUS_PER_SPACING). */
+  double fill_distance = 0.0;
   double radius = 0.0, ours_s = 0.0, pcl_s = 0.0;
   bool failed = false;
 };
 
-Cloud::Ptr
+/** A cloud split at random into the points kept and those removed. */
+struct Removal {
+  Cloud::Ptr kept{new Cloud}, removed{new Cloud};
+};
+
+Removal
 removeAtRandom (const Cloud& cloud, double fraction, std::uint64_t seed)
 {
   std::vector<std::size_t> order (cloud.size());
@@ -498,20 +569,22 @@ removeAtRandom (const Cloud& cloud, double fraction, std::uint64_t seed)
   const std::size_t keep =
       order.size() - static_cast<std::size_t> (
                          std::llround (fraction * static_cast<double> (order.size())));
-  order.resize (keep);
-  std::sort (order.begin(), order.end());
-  Cloud::Ptr kept (new Cloud);
-  for (const std::size_t i : order)
-    kept->push_back (cloud[i]);
-  return kept;
+  std::vector<bool> kept (cloud.size(), false);
+  for (std::size_t k = 0; k < keep; ++k)
+    kept[order[k]] = true;
+  Removal removal;
+  for (std::size_t i = 0; i < cloud.size(); ++i)
+    (kept[i] ? removal.kept : removal.removed)->push_back (cloud[i]);
+  return removal;
 }
 
 ScanResult
 benchScan (const std::string& name,
-           const Cloud::Ptr& cloud,
+           const Removal& removal,
            double fraction,
            const Options& options)
 {
+  const Cloud::Ptr& cloud = removal.kept;
   ScanResult result;
   result.name = name;
   result.removed = fraction;
@@ -529,6 +602,17 @@ benchScan (const std::string& name,
   result.beta1 = ours.getSearchCounts().open_classes;
   result.holes = ours.getHoles().size();
   result.radius = ours.getUsedRadius();
+  result.edges = ours.getComplex().numEdges();
+  result.triangles = ours.getSearchCounts().triangles;
+  const Cloud::Ptr added = fillHoles (cloud, ours.getHoles());
+  result.new_points = added->size();
+  std::vector<double> distances;
+  if (!added->empty() && !removal.removed->empty())
+    distances = nearestDistances (*added, removal.removed);
+  result.fill_distance =
+      distances.empty()
+          ? std::nan ("")
+          : median (distances) / (result.radius / Ours::AUTO_RADIUS_PER_SPACING);
   if (failed) {
     result.pcl_s = std::nan ("");
     return result;
@@ -678,6 +762,38 @@ main (int argc, char** argv)
                  c.found ? static_cast<double> (c.matched) / c.found : 0.0);
   }
 
+  std::printf (
+      "\n### Filling the holes ours found\n\n`HoleFilling` (surface mode, its "
+      "defaults) on the rims of ours, scored against the samples the holes cut out "
+      "(`HoleSurface::cut`, on the noise-free surface): the distance from each new "
+      "point to the nearest cut sample (median and 90th percentile over the new "
+      "points, in h), the cut samples of the found holes with a new point within "
+      "1.5 h, and the found holes that `HoleBoundaryEstimation` at its defaults finds "
+      "again on the filled cloud (0: the filling removed them from H1).\n\n");
+  std::printf ("| kind | noise (h) | new points per surface | to cut samples, median "
+               "(h) | 90th percentile (h) | cut samples covered | holes found again "
+               "|\n|---|---|---|---|---|---|---|\n");
+  for (const GroupResult& group : groups) {
+    const FillingScore& f = group.filling;
+    std::vector<double> distances = f.distances;
+    std::sort (distances.begin(), distances.end());
+    const auto percentile = [&distances] (double q) {
+      return distances.empty() ? std::nan ("")
+                               : distances[static_cast<std::size_t> (
+                                     q * static_cast<double> (distances.size() - 1))];
+    };
+    std::printf ("| %s | %.2f | %.0f | %s | %s | %zu / %zu | %zu / %zu |\n",
+                 group.kind.c_str(),
+                 group.noise,
+                 static_cast<double> (f.new_points) / options.scenes,
+                 pcl::tda::bench::tableCell (percentile (0.5)).c_str(),
+                 pcl::tda::bench::tableCell (percentile (0.9)).c_str(),
+                 f.covered,
+                 f.cut_samples,
+                 f.found_again,
+                 f.filled);
+  }
+
   std::printf ("\n### Summary: mean per-point F1 and time ratio\n\n");
   std::printf (
       "| kind | noise (h) | ours F1 | PCL tutorial F1 | PCL best F1 | PCL best "
@@ -708,7 +824,8 @@ main (int argc, char** argv)
          << (c.found ? static_cast<double> (c.matched) / c.found : 0.0)
          << ",\"ours_s\":" << ours_s
          << ",\"pcl_tutorial_s\":" << median (group.tutorial.times)
-         << ",\"pcl_best_s\":" << best_s << "}";
+         << ",\"pcl_best_s\":" << best_s << ",\"filled_holes\":" << group.filling.filled
+         << ",\"found_again\":" << group.filling.found_again << "}";
   }
   json << "],\"scans\":[";
 
@@ -717,19 +834,27 @@ main (int argc, char** argv)
                "Tables 5.1-5.3 analogue)\n\n");
   std::printf (
       "Non-finite points dropped, then 10, 20 or 30 %% of the points removed at "
-      "random (seed %llu). Ours at its defaults; beta1: the 1-classes open at the "
-      "radius; persistent: those still open at the persistence radius, searched for "
-      "holes with the polygons around borders; holes: rims reported. PCL: "
+      "random (seed %llu). Ours at its defaults; edges, triangles: its complex, up "
+      "to the persistence radius (the triangles counted, not listed); beta1: the "
+      "1-classes open at the radius; persistent: those still open at the persistence "
+      "radius, searched for holes with the polygons around borders; holes: rims "
+      "reported; new points: `HoleFilling` (surface mode) in those holes; new to "
+      "removed: the median distance from a new point to the nearest removed point, "
+      "in spacings h = radius / %.1f (the holes found are mostly the scan's own, "
+      "which no removed point lies in: there it measures how far the hole reaches, "
+      "not an error). PCL: "
       "`pcl::NormalEstimationOMP` and `pcl::BoundaryEstimation` both at our used "
       "radius, angle pi/2 (so about 8 neighbours per point: PCL's normals are rough at "
       "this radius and it flags many points). No ground truth: flagged points only. "
       "Times: median of %d runs.\n\n",
       static_cast<unsigned long long> (options.seed),
+      Ours::AUTO_RADIUS_PER_SPACING,
       options.runs);
   std::printf (
-      "| cloud | removed | points | radius | beta1 | persistent | holes | ours "
-      "(s) | PCL (s) | PCL / ours | ours flagged | PCL flagged |\n"
-      "|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+      "| cloud | removed | points | radius | edges | triangles | beta1 | persistent | "
+      "holes | ours (s) | PCL (s) | PCL / ours | ours flagged | PCL flagged | new "
+      "points | new to removed (h) |\n"
+      "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   bool first = true;
   for (const std::string name : {"milk.pcd",
                                  "rops_cloud.pcd",
@@ -746,16 +871,18 @@ main (int argc, char** argv)
     pcl::Indices unused;
     pcl::removeNaNFromPointCloud (*raw, *finite, unused);
     for (const double fraction : {0.1, 0.2, 0.3}) {
-      const Cloud::Ptr cloud = removeAtRandom (*finite, fraction, options.seed);
+      const Removal removal = removeAtRandom (*finite, fraction, options.seed);
       std::fprintf (stderr, "%s, %.0f %% removed\n", name.c_str(), 100.0 * fraction);
-      const ScanResult r = benchScan (name, cloud, fraction, options);
+      const ScanResult r = benchScan (name, removal, fraction, options);
       std::printf (
-          "| %s | %.0f %% | %zu | %.5g | %zu | %zu | %zu | %.3f | %.3f | %.2f | %s | "
-          "%zu |\n",
+          "| %s | %.0f %% | %zu | %.5g | %zu | %llu | %zu | %zu | %zu | %.3f | %.3f | "
+          "%.2f | %s | %zu | %zu | %s |\n",
           name.c_str(),
           100.0 * fraction,
           r.points,
           r.radius,
+          r.edges,
+          static_cast<unsigned long long> (r.triangles),
           r.beta1,
           r.persistent,
           r.holes,
@@ -763,12 +890,15 @@ main (int argc, char** argv)
           r.pcl_s,
           r.pcl_s / r.ours_s,
           r.failed ? "failed" : std::to_string (r.ours_flagged).c_str(),
-          r.pcl_flagged);
+          r.pcl_flagged,
+          r.new_points,
+          pcl::tda::bench::tableCell (r.fill_distance).c_str());
       json << (first ? "" : ",") << "{\"cloud\":\"" << name
            << "\",\"removed\":" << fraction << ",\"points\":" << r.points
            << ",\"beta1\":" << r.beta1 << ",\"persistent\":" << r.persistent
-           << ",\"holes\":" << r.holes << ",\"ours_s\":" << r.ours_s
-           << ",\"pcl_s\":" << r.pcl_s << "}";
+           << ",\"holes\":" << r.holes << ",\"edges\":" << r.edges
+           << ",\"triangles\":" << r.triangles << ",\"new_points\":" << r.new_points
+           << ",\"ours_s\":" << r.ours_s << ",\"pcl_s\":" << r.pcl_s << "}";
       first = false;
     }
   }

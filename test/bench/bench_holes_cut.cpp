@@ -29,6 +29,7 @@
 #include <pcl/point_types.h>
 
 #include "bench_command_line.h"
+#include "bench_hole_filling.h"
 #include "bench_statistics.h"
 
 #include <algorithm>
@@ -59,6 +60,8 @@ struct Options {
 /** A cloud with round holes cut into it. */
 struct CutScan {
   Cloud::Ptr cloud;
+  /** The points the holes removed: where a filling should put its points. */
+  Cloud::Ptr removed;
   std::vector<Eigen::Vector3f> centres;
 };
 
@@ -130,13 +133,13 @@ cutHoles (const Cloud::Ptr& scan, double hole_radius, int count, unsigned seed)
       cut.centres.push_back (p);
   }
   cut.cloud.reset (new Cloud);
+  cut.removed.reset (new Cloud);
   for (const pcl::PointXYZ& q : *scan) {
     const bool removed = std::any_of (
         cut.centres.begin(), cut.centres.end(), [&] (const Eigen::Vector3f& c) {
           return (q.getVector3fMap() - c).norm() <= hole_radius;
         });
-    if (!removed)
-      cut.cloud->push_back (q);
+    (removed ? cut.removed : cut.cloud)->push_back (q);
   }
   return cut;
 }
@@ -183,11 +186,11 @@ goesAround (const pcl::tda::HoleRim& rim,
   return polygon.contains (polygon.project (c));
 }
 
-/** How many cut holes a rim is centred on, and how many a rim goes around. */
+/** How many cut holes a rim of \a ours (run on the cut scan here) is centred on,
+ * and how many a rim goes around. */
 Found
-findCutHoles (const CutScan& cut, double hole_radius)
+findCutHoles (const CutScan& cut, double hole_radius, Ours& ours)
 {
-  Ours ours;
   ours.setInputCloud (cut.cloud);
   pcl::PointCloud<pcl::Boundary> flags;
   ours.compute (flags);
@@ -208,6 +211,41 @@ findCutHoles (const CutScan& cut, double hole_radius)
         });
   }
   return found;
+}
+
+/** HoleFilling in the holes ours found, against the points the cut removed. */
+struct Filling {
+  /** New points within the cut holes (a spacing of slack), and each one's distance to
+   * the nearest removed point, in units of h. */
+  std::size_t in_cut_holes = 0;
+  std::vector<double> distances;
+  /** Removed points, and those with a new point within 1.5 h. */
+  std::size_t removed = 0, covered = 0;
+};
+
+void
+scoreFilling (const CutScan& cut,
+              const std::vector<pcl::tda::HoleRim>& holes,
+              double hole_radius,
+              double h,
+              Filling& filling)
+{
+  filling.removed += cut.removed->size();
+  const Cloud::Ptr added = pcl::tda::bench::fillHoles (cut.cloud, holes);
+  Cloud::Ptr in_cut_holes (new Cloud);
+  for (const pcl::PointXYZ& p : *added)
+    if (std::any_of (
+            cut.centres.begin(), cut.centres.end(), [&] (const Eigen::Vector3f& c) {
+              return (p.getVector3fMap() - c).norm() <= hole_radius + h;
+            }))
+      in_cut_holes->push_back (p);
+  filling.in_cut_holes += in_cut_holes->size();
+  if (in_cut_holes->empty() || cut.removed->empty())
+    return;
+  for (const double d : pcl::tda::bench::nearestDistances (*in_cut_holes, cut.removed))
+    filling.distances.push_back (d / h);
+  for (const double d : pcl::tda::bench::nearestDistances (*cut.removed, in_cut_holes))
+    filling.covered += d <= 1.5 * h;
 }
 
 double
@@ -252,8 +290,9 @@ main (int argc, char** argv)
           argc, argv, options, parseOptions, printUsage))
     return *stop;
   std::printf ("| cloud | points | h | hole radius | holes cut | centred | around | "
-               "recall (centred, around) | rims reported | time (s) "
-               "|\n|---|---|---|---|---|---|---|---|---|---|\n");
+               "recall (centred, around) | rims reported | time (s) | new points "
+               "in the cut holes | to removed, median (h) | removed covered "
+               "|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   std::size_t all_cut = 0, all_centred = 0, all_around = 0;
   for (const std::string name : {"milk.pcd",
                                  "rops_cloud.pcd",
@@ -272,6 +311,7 @@ main (int argc, char** argv)
       const double hole_radius = radius_in_h * h;
       std::size_t cut_count = 0;
       Found all_seeds;
+      Filling filling;
       std::vector<double> times;
       for (int seed = 1; seed <= options.seeds; ++seed) {
         std::fprintf (
@@ -284,8 +324,10 @@ main (int argc, char** argv)
                               std::to_string (seed)))
           return 1;
         Found found;
+        Ours ours;
         times.push_back (pcl::tda::bench::seconds (
-            [&] { found = findCutHoles (cut, hole_radius); }));
+            [&] { found = findCutHoles (cut, hole_radius, ours); }));
+        scoreFilling (cut, ours.getHoles(), hole_radius, h, filling);
         cut_count += cut.centres.size();
         all_seeds.centred += found.centred;
         all_seeds.around += found.around;
@@ -295,8 +337,8 @@ main (int argc, char** argv)
       all_centred += all_seeds.centred;
       all_around += all_seeds.around;
       std::printf (
-          "| %s | %zu | %.3g | %g h | %zu | %zu | %zu | %.3f, %.3f | %zu | %.3f "
-          "|\n",
+          "| %s | %zu | %.3g | %g h | %zu | %zu | %zu | %.3f, %.3f | %zu | %.3f | %zu "
+          "| %s | %.3f |\n",
           name.c_str(),
           scan->size(),
           h,
@@ -307,7 +349,11 @@ main (int argc, char** argv)
           ratio (all_seeds.centred, cut_count),
           ratio (all_seeds.around, cut_count),
           all_seeds.rims,
-          pcl::tda::bench::median (times));
+          pcl::tda::bench::median (times),
+          filling.in_cut_holes,
+          pcl::tda::bench::tableCell (pcl::tda::bench::median (filling.distances))
+              .c_str(),
+          ratio (filling.covered, filling.removed));
     }
   }
   std::printf ("\nAll scans: of %zu cut holes, a rim is centred on %zu (recall %.3f) "

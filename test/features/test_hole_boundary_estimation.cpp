@@ -166,6 +166,7 @@ TEST (HoleBoundaryEstimation, SearchesTheClassesAliveAtThePersistenceRadius)
     }
     const auto& counts = estimation.getSearchCounts();
     EXPECT_EQ (counts.edges, edges);
+    EXPECT_EQ (counts.triangles, complex.numTriangles());
     EXPECT_EQ (counts.open_classes, open);
     EXPECT_EQ (counts.persistent_classes, persistent);
     // Gaps of the sampling fill in before the persistence radius: the classes alive

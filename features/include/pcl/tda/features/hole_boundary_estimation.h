@@ -236,6 +236,9 @@ public:
   struct SearchCounts {
     /** \brief The edges of VR_r. */
     std::size_t edges = 0;
+    /** \brief The triangles of the complex up to the persistence radius (counted by
+     * its H1, not listed; getComplex() holds its edges). */
+    std::uint64_t triangles = 0;
     /** \brief The 1-classes of VR_r: born by r, alive at r. */
     std::size_t open_classes = 0;
     /** \brief Those still alive at the persistence radius, whose initial cycles

@@ -151,6 +151,7 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
                                          used_radius_,
                                          used_persistence_radius_));
   search_counts_.edges = within_radius;
+  search_counts_.triangles = h1.num_triangles;
   search_counts_.open_classes =
       persistentClassEdges (
           edges, h0.edge_positive, h1.edge_death, used_radius_, used_radius_)
