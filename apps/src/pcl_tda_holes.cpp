@@ -49,9 +49,10 @@ printHelp (const char* program)
   print_info ("  where options are:\n");
   print_info ("    -radius R   = radius of the Vietoris-Rips complex (default: %g "
               "times the\n                  surface spacing, from the distance to "
-              "the %zu-th nearest point)\n",
+              "the %zu-th nearest point;\n                  at most %g times it)\n",
               Estimation::AUTO_RADIUS_PER_SPACING,
-              pcl::tda::SURFACE_SPACING_NEIGHBORS);
+              pcl::tda::SURFACE_SPACING_NEIGHBORS,
+              Estimation::MAX_RADIUS_PER_SPACING);
   print_info ("    -min-hole H = smallest hole radius: the largest empty disk inside "
               "a rim must have\n                  radius H or more (default: %g "
               "times the surface spacing, or\n                  the local spacing "
@@ -201,7 +202,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   if (flags.empty() && !cloud->empty()) {
     console.error ("Hole detection failed (see above). For a complex over the memory "
                    "limit: set a larger one with -memory M (MiB), or a smaller "
-                   "-radius.");
+                   "-radius; for a radius refused, the radius it advises.");
     return 1;
   }
   const std::vector<pcl::tda::HoleRim>& holes = estimation.getHoles();

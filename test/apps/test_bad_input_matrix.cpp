@@ -380,6 +380,9 @@ TEST_F (BadInputMatrix, BadOutputs)
       {"plain.pcd plain.pcd",
        "refusing to overwrite the input file plain.pcd (output)"},
       {"plain.pcd out.pcd -memory 0.000001", "Hole detection failed (see above)"},
+      // Over HoleBoundaryEstimation::MAX_RADIUS_PER_SPACING: refused at once (a
+      // radius over the whole cloud ran for minutes before).
+      {"plain.pcd out.pcd -radius 1000", "Hole detection failed (see above)"},
   };
   for (const auto& [arguments, message] : holes_cases)
     expectRefusal ("holes", arguments, message);

@@ -417,6 +417,15 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
     estimation.setRadius (surface.spacing * 0.1);
     EXPECT_TRUE (fails (estimation));
   }
+  // Over MAX_RADIUS_PER_SPACING spacings (the measured spacing is about h): refused
+  // before the complex is built, up to the whole square (it ran for minutes before).
+  for (const double radius : {12.0 * surface.spacing, 5.0}) {
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    estimation.setRadius (radius);
+    EXPECT_TRUE (fails (estimation)) << radius;
+    EXPECT_EQ (estimation.getComplex().numEdges(), 0u) << radius;
+  }
   {
     Estimation estimation;
     estimation.setInputCloud (cloud);

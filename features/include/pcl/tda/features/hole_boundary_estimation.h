@@ -66,6 +66,13 @@ public:
    * spacings on the generated surfaces), so that real scans, sampled denser along
    * their scan lines than across them, are a surface at it too. */
   static constexpr double AUTO_RADIUS_PER_SPACING = 2.2;
+  /** \brief The largest radius compute() accepts, in units of the surface spacing.
+   * At r the complex fills every hole narrower than about r / sqrt(3), and the
+   * triangles H1 goes through grow as (r / spacing)^4 per point: at 10 spacings, a
+   * point has some 300 neighbours on a surface and its H1 takes seconds for 20,000
+   * points; on the whole unit square of 20,000 points (r = 5 m, 700 spacings) it ran
+   * for minutes at 7 GB before this bound. */
+  static constexpr double MAX_RADIUS_PER_SPACING = 10.0;
   /** \brief The default smallest hole radius, in units of the spacing (see
    * setMinHoleRadius()): below the 3 spacings of the smallest generated holes, and
    * measured in the local spacing around each rim (localSurfaceSpacings()), where
@@ -87,7 +94,8 @@ public:
   HoleBoundaryEstimation() { this->feature_name_ = "HoleBoundaryEstimation"; }
 
   /** \brief Sets the radius r of the complex; 0 (the default) chooses it:
-   * AUTO_RADIUS_PER_SPACING times the surface spacing (surfaceSpacing()). */
+   * AUTO_RADIUS_PER_SPACING times the surface spacing (surfaceSpacing()). compute()
+   * refuses a radius over MAX_RADIUS_PER_SPACING times the spacing. */
   void
   setRadius (double radius)
   {

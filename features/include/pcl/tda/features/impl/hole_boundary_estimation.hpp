@@ -56,6 +56,23 @@ HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
     return false;
   }
   used_radius_ = radius_ > 0.0 ? radius_ : AUTO_RADIUS_PER_SPACING * spacing;
+  if (used_radius_ > MAX_RADIUS_PER_SPACING * spacing) {
+    PCL_ERROR ("[pcl::tda::%s::compute] The radius %g is %.0f times the point spacing "
+               "%g, over %g times: at that radius the complex fills every hole "
+               "narrower than about %g (radius / sqrt(3)), and the work of finding "
+               "holes grows as the fourth power of the radius. Use a radius of about "
+               "%g times the spacing (the default), at most %g; to keep only large "
+               "holes, set the smallest hole radius instead.\n",
+               getClassName().c_str(),
+               used_radius_,
+               used_radius_ / spacing,
+               spacing,
+               MAX_RADIUS_PER_SPACING,
+               used_radius_ / std::sqrt (3.0),
+               AUTO_RADIUS_PER_SPACING,
+               MAX_RADIUS_PER_SPACING * spacing);
+    return false;
+  }
   used_band_width_ = band_width_ > 0.0
                          ? band_width_
                          : std::min (AUTO_BAND_PER_SPACING * spacing, used_radius_);
