@@ -338,13 +338,14 @@ struct FillingScore {
         cut_of_found->push_back ({p.x, p.y, p.z});
     }
     cut_samples += cut_of_found->size();
-    if (added->empty() || cut->empty())
-      return;
     const double h = surface.spacing;
-    for (const double d : nearestDistances (*added, cut))
-      distances.push_back (d / h);
-    for (const double d : nearestDistances (*cut_of_found, added))
-      covered += d <= 1.5 * h;
+    if (!added->empty() && !cut->empty()) {
+      for (const double d : nearestDistances (*added, cut))
+        distances.push_back (d / h);
+      for (const double d : nearestDistances (*cut_of_found, added))
+        covered += d <= 1.5 * h;
+    }
+    // Every found hole is counted, also one the filling added no point to.
     Cloud::Ptr filled_cloud (new Cloud (*cloud));
     *filled_cloud += *added;
     Ours again;
