@@ -27,7 +27,6 @@ public:
   : complex_ (complex)
   , block_offsets_ (largeVector<std::uint64_t> (complex.numEdges() + 1, 0))
   , adjacency_ (buildEdgeAdjacency (complex.numVertices(), complex.edges()))
-  , common_neighbors_ (complex.edges(), adjacency_)
   , killed_edge_ (largeVector<SimplexIndex> (complex.numTriangles(), INVALID_SIMPLEX))
   {
     for (const auto& triangle : complex.triangles())
@@ -48,12 +47,20 @@ public:
     return true;
   }
 
+  CommonNeighborSearch
+  commonNeighborSearch () const
+  {
+    return {complex_.edges(), adjacency_};
+  }
+
   /** The coboundary of \a edge, in no particular order, into \a coboundary. */
   void
-  coboundary (SimplexIndex edge, CycleSet& coboundary)
+  coboundary (SimplexIndex edge,
+              CommonNeighborSearch& search,
+              CycleSet& coboundary) const
   {
     coboundary.clear();
-    common_neighbors_.forEach (edge, [&] (SimplexIndex uw, SimplexIndex vw) {
+    search.forEach (edge, [&] (SimplexIndex uw, SimplexIndex vw) {
       const SimplexIndex triangle = triangleOf (edge, uw, vw);
       if (triangle != INVALID_SIMPLEX)
         coboundary.push_back (triangle);
@@ -103,7 +110,6 @@ private:
   const FilteredComplex& complex_;
   std::vector<std::uint64_t> block_offsets_;
   EdgeAdjacency adjacency_;
-  CommonNeighborSearch common_neighbors_;
   std::vector<SimplexIndex> killed_edge_;
 };
 
@@ -115,7 +121,7 @@ addCohomologyH1Persistence (const FilteredComplex& complex,
                             const ProgressCallback& progress)
 {
   ListedCoboundaries coboundaries (complex);
-  reduceEdgeCoboundaries (result.edge_positive, coboundaries, progress);
+  reduceEdgeCoboundaries (result.edge_positive, coboundaries, 1, progress);
   addTriangleDeaths (coboundaries.killedEdges(), result);
 }
 

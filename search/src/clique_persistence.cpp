@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <unordered_map>
 #include <utility>
 
 namespace pcl {
@@ -67,8 +66,8 @@ findApparentPairs (const EdgeAdjacency& adjacency,
 
 /** The triangles of a clique complex for reduceEdgeCoboundaries(), named by
  * TriangleKey: coboundaries from the common neighbours of an edge's ends; the
- * apparent pairs from findApparentPairs(), the pairs the reduction makes in a hash
- * map (a few percent of the positive edges on real scans). */
+ * apparent pairs from findApparentPairs(), the pairs the reduction makes in lists
+ * per youngest edge. */
 class CliqueCoboundaries {
 public:
   using Key = TriangleKey;
@@ -76,7 +75,10 @@ public:
   CliqueCoboundaries (const std::vector<FilteredEdge>& edges,
                       const EdgeAdjacency& adjacency,
                       const std::vector<SimplexIndex>& apparent_middle)
-  : common_neighbors_ (edges, adjacency), apparent_middle_ (apparent_middle)
+  : edges_ (edges)
+  , adjacency_ (adjacency)
+  , apparent_middle_ (apparent_middle)
+  , first_reduced_pair_ (largeVector<std::uint32_t> (edges.size(), NO_PAIR))
   {}
 
   bool
@@ -85,11 +87,19 @@ public:
     return apparent_middle_[edge] != INVALID_SIMPLEX;
   }
 
+  CommonNeighborSearch
+  commonNeighborSearch () const
+  {
+    return {edges_, adjacency_};
+  }
+
   void
-  coboundary (SimplexIndex edge, std::vector<Key>& column)
+  coboundary (SimplexIndex edge,
+              CommonNeighborSearch& search,
+              std::vector<Key>& column) const
   {
     column.clear();
-    common_neighbors_.forEach (edge, [&] (SimplexIndex uw, SimplexIndex vw) {
+    search.forEach (edge, [&] (SimplexIndex uw, SimplexIndex vw) {
       const SimplexIndex youngest = std::max ({edge, uw, vw});
       const SimplexIndex oldest = std::min ({edge, uw, vw});
       column.push_back (triangleKey (youngest, edge ^ uw ^ vw ^ youngest ^ oldest));
@@ -100,16 +110,24 @@ public:
   owner (Key triangle) const
   {
     const SimplexIndex youngest = youngestEdge (triangle);
-    if (apparent_middle_[youngest] == middleEdge (triangle))
+    const SimplexIndex middle = middleEdge (triangle);
+    if (apparent_middle_[youngest] == middle)
       return youngest;
-    const auto found = reduced_pairs_.find (triangle);
-    return found == reduced_pairs_.end() ? INVALID_SIMPLEX : found->second;
+    for (auto pair = first_reduced_pair_[youngest]; pair != NO_PAIR;
+         pair = reduced_pairs_[pair].next)
+      if (reduced_pairs_[pair].middle == middle)
+        return reduced_pairs_[pair].edge;
+    return INVALID_SIMPLEX;
   }
 
   void
   setOwner (Key triangle, SimplexIndex edge)
   {
-    reduced_pairs_.emplace (triangle, edge);
+    const SimplexIndex youngest = youngestEdge (triangle);
+    reduced_pairs_.push_back (
+        {middleEdge (triangle), edge, first_reduced_pair_[youngest]});
+    first_reduced_pair_[youngest] =
+        static_cast<std::uint32_t> (reduced_pairs_.size() - 1);
   }
 
   /** The pairs the reduction made (the apparent ones have zero length), as (killing
@@ -117,16 +135,35 @@ public:
   std::vector<std::pair<Key, SimplexIndex>>
   sortedReducedPairs () const
   {
-    std::vector<std::pair<Key, SimplexIndex>> pairs (reduced_pairs_.begin(),
-                                                     reduced_pairs_.end());
+    std::vector<std::pair<Key, SimplexIndex>> pairs;
+    pairs.reserve (reduced_pairs_.size());
+    for (SimplexIndex youngest = 0; youngest < first_reduced_pair_.size(); ++youngest)
+      for (auto pair = first_reduced_pair_[youngest]; pair != NO_PAIR;
+           pair = reduced_pairs_[pair].next)
+        pairs.emplace_back (triangleKey (youngest, reduced_pairs_[pair].middle),
+                            reduced_pairs_[pair].edge);
     std::sort (pairs.begin(), pairs.end());
     return pairs;
   }
 
 private:
-  CommonNeighborSearch common_neighbors_;
+  const std::vector<FilteredEdge>& edges_;
+  const EdgeAdjacency& adjacency_;
+  /** A pair the reduction made: its triangle's middle edge, its edge, and the next
+   * pair of a triangle with the same youngest edge. */
+  struct ReducedPair {
+    SimplexIndex middle;
+    SimplexIndex edge;
+    std::uint32_t next;
+  };
+  static constexpr std::uint32_t NO_PAIR = 0xffffffffu;
+
   const std::vector<SimplexIndex>& apparent_middle_;
-  std::unordered_map<Key, SimplexIndex> reduced_pairs_;
+  // The pairs the reduction made (a few percent of the positive edges on real
+  // scans), listed per youngest edge of their triangle: looking one up reads an
+  // entry per edge, mostly NO_PAIR, where a hash map of triangles chased pointers.
+  std::vector<std::uint32_t> first_reduced_pair_;
+  std::vector<ReducedPair> reduced_pairs_;
 };
 
 } // namespace
@@ -138,11 +175,17 @@ computeCliqueH1Persistence (const FilteredComplex& skeleton,
                             const ProgressCallback& progress)
 {
   const auto& edges = skeleton.edges();
+  const int num_threads = threads > 0
+                              ? static_cast<int> (threads)
+                              : static_cast<int> (std::clamp<std::size_t> (
+                                    edges.size() / EDGES_PER_THREAD,
+                                    1,
+                                    static_cast<std::size_t> (resolveThreads (0))));
   const EdgeAdjacency adjacency = buildEdgeAdjacency (skeleton.numVertices(), edges);
-  const ApparentPairs apparent =
-      findApparentPairs (adjacency, h0.edge_positive, threads);
+  const ApparentPairs apparent = findApparentPairs (
+      adjacency, h0.edge_positive, static_cast<unsigned int> (num_threads));
   CliqueCoboundaries coboundaries (edges, adjacency, apparent.middle);
-  reduceEdgeCoboundaries (h0.edge_positive, coboundaries, progress);
+  reduceEdgeCoboundaries (h0.edge_positive, coboundaries, num_threads, progress);
 
   CliqueH1Persistence persistence;
   persistence.num_triangles = apparent.num_triangles;

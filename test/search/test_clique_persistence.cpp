@@ -2,6 +2,7 @@
 // with its triangles listed.
 
 #include <pcl/io/pcd_io.h>
+#include <pcl/tda/common/coboundary_reduction.h>
 #include <pcl/tda/common/h0_persistence.h>
 #include <pcl/tda/common/persistence_engines.h>
 #include <pcl/tda/search/clique_persistence.h>
@@ -36,8 +37,8 @@ buildComplex (const Cloud::ConstPtr& cloud, double radius, int max_dimension)
 }
 
 /** The clique engine on the skeleton equals \a engine on the listed complex:
- * the same intervals in the same order, and the same number of triangles, with 1
- * and 2 threads. Returns the number of intervals. */
+ * the same intervals in the same order, and the same number of triangles, with 1,
+ * 2 and 3 threads. Returns the number of intervals. */
 std::size_t
 expectSameAsListed (const Cloud::ConstPtr& cloud,
                     double radius,
@@ -66,7 +67,7 @@ expectSameAsListed (const Cloud::ConstPtr& cloud,
   EXPECT_EQ (skeleton.numTriangles(), 0u);
   EXPECT_EQ (skeleton.numEdges(), listed.numEdges()) << what;
   const PersistenceResult h0 = computeH0Persistence (skeleton);
-  for (const unsigned int threads : {1u, 2u}) {
+  for (const unsigned int threads : {1u, 2u, 3u}) {
     const CliqueH1Persistence clique =
         computeCliqueH1Persistence (skeleton, h0, threads);
     EXPECT_EQ (clique.num_triangles, listed.numTriangles()) << what;
@@ -116,6 +117,23 @@ TEST (CliqueH1Persistence, EqualsTheStandardReductionOnRandomClouds)
                                      "case " + std::to_string (k));
   }
   EXPECT_GT (intervals, 200u); // the cases are not trivial
+}
+
+TEST (CliqueH1Persistence, EqualsTheStandardReductionAcrossManyBatches)
+{
+  // Thousands of columns to reduce, in many batches (BATCH_COLUMNS) whose columns
+  // meet the pivots of earlier columns of the same batch.
+  std::mt19937 random (23);
+  std::size_t intervals = 0;
+  for (unsigned int k = 0; k < 4; ++k) {
+    const bool on_grid = k % 2 == 1;
+    const double radius = on_grid ? 0.25 : 0.3;
+    intervals += expectSameAsListed (randomCloud (random, 2500, on_grid),
+                                     radius,
+                                     PersistenceEngine::STANDARD,
+                                     "large case " + std::to_string (k));
+  }
+  EXPECT_GT (intervals, 4 * pcl::tda::BATCH_COLUMNS);
 }
 
 TEST (CliqueH1Persistence, CircleHasOneLongInterval)

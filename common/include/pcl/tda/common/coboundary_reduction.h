@@ -1,5 +1,6 @@
 #pragma once
 
+#include <pcl/tda/common/edge_adjacency.h>
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/large_vector.h>
 #include <pcl/tda/common/progress.h>
@@ -10,59 +11,88 @@
 #include <utility>
 #include <vector>
 
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
 namespace pcl {
 namespace tda {
+
+/** \brief The OpenMP thread number of the caller (0 without OpenMP). */
+inline int
+currentThread ()
+{
+#ifdef _OPENMP
+  return omp_get_thread_num();
+#else
+  return 0;
+#endif
+}
 
 /** \brief The columns a coboundary reduction keeps for later additions, one after
  * another in a few large blocks: the reduced column of a paired edge, or the
  * coboundary of an apparent pair's edge once some column needs it. A column is
- * stored once and never changes, so blocks and an index per edge replace a map of
+ * stored once and never changes, so blocks and a pointer per edge replace a map of
  * vectors (tens of thousands of allocations on a real scan); a block is never moved
  * (a full one is followed by a new one), so that storing costs no copy of the columns
- * stored before. \a Key names a triangle. */
+ * stored before. Threads store into blocks of their own and read all columns at
+ * once: a column is published by its pointer, after its keys. \a Key names a
+ * triangle. */
 template <typename Key>
 class StoredColumns {
 public:
-  explicit StoredColumns (std::size_t num_edges)
-  : slot_ (largeVector<std::uint32_t> (num_edges, NONE))
+  /** \param[in] num_edges the edges, ids 0 to num_edges - 1
+   * \param[in] threads the threads that store, numbered from 0 */
+  StoredColumns (std::size_t num_edges, int threads)
+  : column_ (largeVector<const Key*> (num_edges, nullptr))
+  , blocks_ (static_cast<std::size_t> (threads))
   {}
 
   bool
   has (SimplexIndex edge) const
   {
-    return slot_[edge] != NONE;
+    return __atomic_load_n (&column_[edge], __ATOMIC_ACQUIRE) != nullptr;
   }
 
+  /** \brief Stores \a column (its keys) as the column of \a edge, from thread
+   * \a thread. Two threads may store the same edge at once when they store the same
+   * keys (a coboundary): either copy is read. */
   void
-  store (SimplexIndex edge, const std::vector<Key>& column)
+  store (SimplexIndex edge, const std::vector<Key>& column, int thread = 0)
   {
-    if (blocks_.empty() ||
-        blocks_.back().capacity() - blocks_.back().size() < column.size()) {
-      blocks_.emplace_back();
-      blocks_.back().reserve (std::max (BLOCK_KEYS, column.size()));
+    std::vector<std::vector<Key>>& blocks = blocks_[static_cast<std::size_t> (thread)];
+    const std::size_t size = column.size() + 1; // the keys after their number
+    if (blocks.empty() || blocks.back().capacity() - blocks.back().size() < size) {
+      blocks.emplace_back();
+      blocks.back().reserve (std::max (BLOCK_KEYS, size));
     }
-    std::vector<Key>& block = blocks_.back();
-    const Key* first = block.data() + block.size();
+    std::vector<Key>& block = blocks.back();
+    const Key* stored = block.data() + block.size();
+    block.push_back (static_cast<Key> (column.size()));
     block.insert (block.end(), column.begin(), column.end());
-    slot_[edge] = static_cast<std::uint32_t> (columns_.size());
-    columns_.emplace_back (first, first + column.size());
+    __atomic_store_n (&column_[edge], stored, __ATOMIC_RELEASE);
   }
 
   /** The stored column of \a edge as [first, last). */
   std::pair<const Key*, const Key*>
   column (SimplexIndex edge) const
   {
-    return columns_[slot_[edge]];
+    const Key* stored = __atomic_load_n (&column_[edge], __ATOMIC_ACQUIRE);
+    return {stored + 1, stored + 1 + static_cast<std::size_t> (*stored)};
   }
 
 private:
-  static constexpr std::uint32_t NONE = 0xffffffffu;
   /** Keys per block: 2 MiB, a huge page where malloc takes them. */
   static constexpr std::size_t BLOCK_KEYS = (std::size_t{2} << 20) / sizeof (Key);
-  std::vector<std::uint32_t> slot_; // per edge: its column's slot, or NONE
-  std::vector<std::pair<const Key*, const Key*>> columns_; // per slot
-  std::vector<std::vector<Key>> blocks_;
+  /** Per edge: its column's number of keys, followed by the keys; or nullptr. Read
+   * and written atomically (GCC's and Clang's builtins: C++17 has no atomic_ref, and
+   * a vector of std::atomic could not take storage given to adviseHugePages()). */
+  std::vector<const Key*> column_;
+  std::vector<std::vector<std::vector<Key>>> blocks_; // per thread
 };
+
+/** \brief Columns per batch of reduceEdgeCoboundaries(). */
+constexpr std::size_t BATCH_COLUMNS = 256;
 
 /** \brief Persistent cohomology of the edges (H1): the reduction loop of the
  * cohomology engines, whichever way they name and enumerate triangles.
@@ -77,64 +107,143 @@ private:
  * sorted nor stored (as Ripser does). Cohomology pairs the same simplices as
  * homology. The column under reduction is a ReductionColumn: a heap once long.
  *
+ * The columns to reduce go in batches of BATCH_COLUMNS, in order. Within a batch,
+ * first in parallel, every column is reduced by the columns paired before the
+ * batch (the apparent pairs, all known from the start, and the earlier batches),
+ * as far as they reach; then, one after the other, each is reduced on by the
+ * columns of the batch paired before it, and paired. Every addition is of a column
+ * of a younger edge, as in the serial order, and a reduced matrix has the same
+ * pivots whichever such additions made it (Edelsbrunner and Harer, Sec VII.1): the
+ * pairs, hence the diagram, are those of the serial reduction, whatever the number
+ * of threads. The batches do not depend on it either, so neither do the columns.
+ *
  * \a Coboundaries names a triangle by a \c Key ordered as the filtration and
  * provides:
  * - `bool claimApparentPair (SimplexIndex edge)`: true when the positive \a edge
  *   forms an apparent pair, which it then records;
- * - `void coboundary (SimplexIndex edge, std::vector<Key>& column)`: the
- *   coboundary of \a edge, in any order;
- * - `SimplexIndex owner (Key triangle)`: the edge paired with \a triangle so far
- *   (apparent pairs included), or INVALID_SIMPLEX;
+ * - `CommonNeighborSearch commonNeighborSearch () const`: a search for one thread;
+ * - `void coboundary (SimplexIndex edge, CommonNeighborSearch& search,
+ *   std::vector<Key>& column) const`: the coboundary of \a edge, in any order,
+ *   found with \a search; called from several threads at once;
+ * - `SimplexIndex owner (Key triangle) const`: the edge paired with \a triangle so
+ *   far (apparent pairs included), or INVALID_SIMPLEX; called from several threads
+ *   at once, never while setOwner() runs;
  * - `void setOwner (Key triangle, SimplexIndex edge)`: pairs them.
  * \param[in] edge_positive per edge, 1 when it is positive (from H0)
  * \param[in,out] coboundaries the triangles and the pairing
+ * \param[in] threads OpenMP threads of the parallel phases (at least 1; without
+ * OpenMP, one)
  * \param[in] progress optional callback (edges processed, edges)
  */
 template <typename Coboundaries>
 void
 reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
                         Coboundaries& coboundaries,
+                        int threads,
                         const ProgressCallback& progress)
 {
   using Key = typename Coboundaries::Key;
   const std::size_t num_edges = edge_positive.size();
+  // The apparent pairs first: then every pair a reduction may meet before the
+  // batch is known (an apparent pair's edge is younger than every other edge of its
+  // triangle, so it comes before any column that meets that triangle).
+  std::vector<SimplexIndex> columns; // the other positive edges, youngest first
+  for (std::size_t k = 0; k < num_edges; ++k) {
+    const auto edge = static_cast<SimplexIndex> (num_edges - 1 - k);
+    if (edge_positive[edge] && !coboundaries.claimApparentPair (edge))
+      columns.push_back (edge);
+  }
+
+  // A cache line of its own: the vectors of one thread change at every key.
+  struct alignas (64) Thread {
+    CommonNeighborSearch search;
+    ReductionColumn<Key> column;
+    std::vector<Key> keys, scratch;
+  };
+  std::vector<Thread> workers;
+  for (int t = 0; t < threads; ++t)
+    workers.push_back ({coboundaries.commonNeighborSearch(), {}, {}, {}});
   // The reduced columns of the edges whose columns were added to, an apparent or
   // emergent pair's (its coboundary, unchanged) only when first needed: few edges
   // need one.
-  StoredColumns<Key> stored (num_edges);
-  std::vector<Key> column, owner_column;
-  ReductionColumn<Key> reduced;
-  for (std::size_t k = 0; k < num_edges; ++k) {
-    const auto edge = static_cast<SimplexIndex> (num_edges - 1 - k);
-    reportProgress (progress, k, num_edges);
-    if (!edge_positive[edge] || coboundaries.claimApparentPair (edge))
-      continue;
-    coboundaries.coboundary (edge, column);
-    if (column.empty())
-      continue; // in no triangle: an essential class
-    const Key pivot = *std::min_element (column.begin(), column.end());
-    if (coboundaries.owner (pivot) == INVALID_SIMPLEX) {
-      coboundaries.setOwner (pivot, edge); // an emergent pair
-      continue;
-    }
-    std::sort (column.begin(), column.end());
-    reduced.assign (column);
+  StoredColumns<Key> stored (num_edges, threads);
+  // Adds to \a worker's column the columns of the owners of its pivots while they
+  // have one, storing an owner's coboundary the first time it is needed.
+  const auto reduce = [&] (Thread& worker, int thread) {
     SimplexIndex owner;
-    while (reduced.findPivot() &&
-           (owner = coboundaries.owner (reduced.pivot())) != INVALID_SIMPLEX) {
+    while (worker.column.findPivot() &&
+           (owner = coboundaries.owner (worker.column.pivot())) != INVALID_SIMPLEX) {
       if (!stored.has (owner)) { // an apparent or emergent pair: its coboundary
-        coboundaries.coboundary (owner, owner_column);
-        std::sort (owner_column.begin(), owner_column.end());
-        stored.store (owner, owner_column);
+        coboundaries.coboundary (owner, worker.search, worker.scratch);
+        std::sort (worker.scratch.begin(), worker.scratch.end());
+        stored.store (owner, worker.scratch, thread);
       }
       const auto [first, last] = stored.column (owner);
-      reduced.add (first, last);
+      worker.column.add (first, last);
     }
-    if (reduced.findPivot()) {
-      coboundaries.setOwner (reduced.pivot(), edge);
-      stored.store (edge, reduced.sum());
+  };
+
+  // Per column of a batch: its keys, sorted or not.
+  std::vector<std::vector<Key>> batch (BATCH_COLUMNS);
+  std::vector<std::uint8_t> sorted (BATCH_COLUMNS);
+  for (std::size_t begin = 0; begin < columns.size(); begin += BATCH_COLUMNS) {
+    reportProgress (progress, num_edges - 1 - columns[begin], num_edges);
+    const auto size =
+        static_cast<std::int64_t> (std::min (BATCH_COLUMNS, columns.size() - begin));
+    // In parallel: the coboundaries, reduced by the columns paired before the batch.
+#ifdef _OPENMP
+#pragma omp parallel for num_threads(threads) schedule(dynamic, 4)
+#endif
+    for (std::int64_t i = 0; i < size; ++i) {
+      const int thread = currentThread();
+      Thread& worker = workers[static_cast<std::size_t> (thread)];
+      // Filled in the worker's own vector, then swapped in: the threads would
+      // write the neighbouring vectors of the batch at every key otherwise.
+      std::vector<Key>& keys = worker.keys;
+      coboundaries.coboundary (columns[begin + i], worker.search, keys);
+      const bool unreduced =
+          keys.empty() ||
+          coboundaries.owner (*std::min_element (keys.begin(), keys.end())) ==
+              INVALID_SIMPLEX;
+      if (!unreduced) {
+        std::sort (keys.begin(), keys.end());
+        worker.column.assign (keys);
+        reduce (worker, thread);
+        worker.column.release (keys);
+      }
+      sorted[i] = !unreduced;
+      batch[i].swap (keys);
+    }
+
+    // In order: reduced on by the columns of the batch paired before it, and paired.
+    Thread& worker = workers.front();
+    for (std::int64_t i = 0; i < size; ++i) {
+      std::vector<Key>& keys = batch[i];
+      const SimplexIndex edge = columns[begin + i];
+      if (keys.empty())
+        continue; // an essential class
+      if (!sorted[i]) {
+        const Key pivot = *std::min_element (keys.begin(), keys.end());
+        if (coboundaries.owner (pivot) == INVALID_SIMPLEX) {
+          coboundaries.setOwner (pivot, edge); // an emergent pair
+          continue;
+        }
+        std::sort (keys.begin(), keys.end());
+      }
+      else if (coboundaries.owner (keys.front()) == INVALID_SIMPLEX) {
+        coboundaries.setOwner (keys.front(), edge); // reduced in parallel
+        stored.store (edge, keys);
+        continue;
+      }
+      worker.column.assign (keys);
+      reduce (worker, 0);
+      if (worker.column.findPivot()) {
+        coboundaries.setOwner (worker.column.pivot(), edge);
+        stored.store (edge, worker.column.sum());
+      }
     }
   }
+  reportProgress (progress, num_edges - 1, num_edges);
 }
 
 } // namespace tda

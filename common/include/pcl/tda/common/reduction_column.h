@@ -100,6 +100,16 @@ public:
     return keys_;
   }
 
+  /** \brief Moves the sum (sorted, distinct) into \a keys, whose old contents the
+   * column takes as scratch space; the column is then empty. */
+  void
+  release (std::vector<Key>& keys)
+  {
+    sum();
+    keys_.swap (keys);
+    keys_.clear();
+  }
+
 private:
   std::vector<Key> keys_;
   std::vector<Key> buffer_; // scratch space of the merges
