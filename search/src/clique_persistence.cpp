@@ -175,17 +175,24 @@ computeCliqueH1Persistence (const FilteredComplex& skeleton,
                             const ProgressCallback& progress)
 {
   const auto& edges = skeleton.edges();
-  const int num_threads = threads > 0
-                              ? static_cast<int> (threads)
-                              : static_cast<int> (std::clamp<std::size_t> (
-                                    edges.size() / EDGES_PER_THREAD,
-                                    1,
-                                    static_cast<std::size_t> (resolveThreads (0))));
+  // \a threads, or OpenMP's default but at most one per \a work_per_thread.
+  const auto threads_for = [threads] (std::uint64_t work,
+                                      std::uint64_t work_per_thread) {
+    if (threads > 0)
+      return static_cast<int> (threads);
+    return static_cast<int> (std::clamp<std::uint64_t> (
+        work / work_per_thread, 1, static_cast<std::uint64_t> (resolveThreads (0))));
+  };
   const EdgeAdjacency adjacency = buildEdgeAdjacency (skeleton.numVertices(), edges);
   const ApparentPairs apparent = findApparentPairs (
-      adjacency, h0.edge_positive, static_cast<unsigned int> (num_threads));
+      adjacency,
+      h0.edge_positive,
+      static_cast<unsigned int> (threads_for (edges.size(), EDGES_PER_THREAD)));
   CliqueCoboundaries coboundaries (edges, adjacency, apparent.middle);
-  reduceEdgeCoboundaries (h0.edge_positive, coboundaries, num_threads, progress);
+  reduceEdgeCoboundaries (h0.edge_positive,
+                          coboundaries,
+                          threads_for (apparent.num_triangles, TRIANGLES_PER_THREAD),
+                          progress);
 
   CliqueH1Persistence persistence;
   persistence.num_triangles = apparent.num_triangles;

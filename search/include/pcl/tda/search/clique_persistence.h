@@ -26,11 +26,18 @@ struct CliqueH1Persistence {
   std::uint64_t num_triangles = 0;
 };
 
-/** \brief Edges per thread below which computeCliqueH1Persistence() takes fewer
- * threads than OpenMP's default: waking a thread costs more than the work of a
- * couple of thousand edges (bunny.pcd at 1,988 edges: 0.07 ms on one thread, 0.14 ms
- * on two; colored_cloud.pcd at 4,996 edges: 0.35 ms and 0.23 ms). */
-constexpr std::size_t EDGES_PER_THREAD = 2048;
+/** \brief Edges per thread of the apparent-pair pass of computeCliqueH1Persistence()
+ * when the threads are OpenMP's default: fewer edges take fewer threads, waking a
+ * thread costing more than their work (bunny.pcd at 1,988 edges: 0.07 ms on one
+ * thread, 0.14 ms on two; colored_cloud.pcd at 4,996 edges: 0.35 ms and 0.23 ms). */
+constexpr std::uint64_t EDGES_PER_THREAD = 2048;
+
+/** \brief Triangles per thread of the reduction of computeCliqueH1Persistence() when
+ * the threads are OpenMP's default: on smaller complexes the columns of a batch meet
+ * each other's pivots so often that the batches cost more than the threads gain
+ * (milk.pcd at 118k triangles: 8.0 ms on two threads, 7.7 ms on one;
+ * sac_plane_test.pcd at 116k: 3.9 ms and 4.2 ms). */
+constexpr std::uint64_t TRIANGLES_PER_THREAD = 65536;
 
 /** \brief H1 persistence of the clique complex of dimension 2 of \a skeleton's edges
  * (every three pairwise joined vertices span a triangle, at the value of its longest
@@ -48,7 +55,8 @@ constexpr std::size_t EDGES_PER_THREAD = 2048;
  * \param[in] skeleton the edges in filtration order (its triangles are ignored)
  * \param[in] h0 computeH0Persistence() of \a skeleton: which edges are positive
  * \param[in] threads OpenMP threads (0: OpenMP's default, but at most one per
- * EDGES_PER_THREAD edges); the result does not depend on it
+ * EDGES_PER_THREAD edges in the first pass and one per TRIANGLES_PER_THREAD
+ * triangles in the reduction); the result does not depend on it
  * \param[in] progress optional callback (edges processed, edges) of the reduction
  */
 CliqueH1Persistence
