@@ -93,8 +93,13 @@ public:
   }
 
 private:
-  /** Keys per block: 2 MiB, a huge page where malloc takes them. */
-  static constexpr std::size_t BLOCK_KEYS = (std::size_t{2} << 20) / sizeof (Key);
+  /** Keys per block: 8 MiB, whole huge pages where malloc takes them. Not 2 MiB:
+   * freeing the first block, malloc raises the size it asks the system for memory
+   * by (and, twice as much, the free memory at the top of its heap that it gives
+   * back) to the block's; at 2 MiB, a pipeline that runs again and again on a scan
+   * like milk.pcd gave back and faulted in its 3 MB again on every run, and took
+   * twice as long. Pages never written are never taken. */
+  static constexpr std::size_t BLOCK_KEYS = (std::size_t{8} << 20) / sizeof (Key);
   /** Per edge: its column's number of keys, followed by the keys; or nullptr. Read
    * and written atomically (GCC's and Clang's builtins: C++17 has no atomic_ref, and
    * a vector of std::atomic could not take storage given to adviseHugePages()). */
@@ -134,8 +139,8 @@ constexpr std::size_t MIN_SLOW_BATCHES = 3;
  * of a younger edge, as in the serial order, and a reduced matrix has the same
  * pivots whichever such additions made it (Edelsbrunner and Harer, Sec VII.1): the
  * pairs, hence the diagram, are those of the serial reduction, whatever the number
- * of threads. The batches do not depend on it either, so neither do the columns.
- * Where another process holds a core, a batch waits for the thread the system does
+ * of threads. On one thread a batch is one column: the serial loop. Where another
+ * process holds a core, a batch waits for the thread the system does
  * not run: from MIN_SLOW_BATCHES such batches (threads running less than
  * BUSY_EFFICIENCY of the time), if more than one in ten, the rest goes on one
  * thread.
@@ -206,60 +211,69 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
     }
   };
 
+  // The coboundary of the column at \a position, reduced by the pairs made so far
+  // as far as they reach, into \a keys (swapped in: the threads would write the
+  // neighbouring vectors of a batch at every key otherwise). Returns whether it is
+  // sorted: not when its oldest triangle had no owner (maybe an emergent pair), nor
+  // when it has no triangle (an essential class).
+  const auto reduce_ahead =
+      [&] (std::size_t position, int thread, std::vector<Key>& keys) {
+        Thread& worker = workers[static_cast<std::size_t> (thread)];
+        coboundaries.coboundary (columns[position], worker.search, worker.keys);
+        const bool unreduced =
+            worker.keys.empty() ||
+            coboundaries.owner (*std::min_element (
+                worker.keys.begin(), worker.keys.end())) == INVALID_SIMPLEX;
+        if (!unreduced) {
+          std::sort (worker.keys.begin(), worker.keys.end());
+          worker.column.assign (worker.keys);
+          reduce (worker, thread);
+          worker.column.release (worker.keys);
+        }
+        keys.swap (worker.keys);
+        return !unreduced;
+      };
+
   std::size_t batches = 0, slow_batches = 0;
   // Per column of a batch: its keys, sorted or not.
   std::vector<std::vector<Key>> batch (BATCH_COLUMNS);
   std::vector<std::uint8_t> sorted (BATCH_COLUMNS);
-  for (std::size_t begin = 0; begin < columns.size(); begin += BATCH_COLUMNS) {
+  for (std::size_t begin = 0, size; begin < columns.size(); begin += size) {
     reportProgress (progress, num_edges - 1 - columns[begin], num_edges);
-    const auto size =
-        static_cast<std::int64_t> (std::min (BATCH_COLUMNS, columns.size() - begin));
-    // In parallel: the coboundaries, reduced by the columns paired before the batch.
-    const auto started = std::chrono::steady_clock::now();
-    double working = 0.0; // the threads' processor time
+    // On one thread, batches of one column: the serial loop.
+    size = std::min (threads > 1 ? BATCH_COLUMNS : 1, columns.size() - begin);
+    if (threads == 1)
+      sorted[0] = reduce_ahead (begin, 0, batch[0]);
+    else {
+      // In parallel: the columns reduced by the pairs made before the batch.
+      const auto started = std::chrono::steady_clock::now();
+      double working = 0.0; // the threads' processor time
 #ifdef _OPENMP
 #pragma omp parallel num_threads(threads) reduction(+ : working)
 #endif
-    {
-      const double processor_time = threadProcessorSeconds();
+      {
+        const double processor_time = threadProcessorSeconds();
 #ifdef _OPENMP
 #pragma omp for schedule(dynamic, 4) nowait
 #endif
-      for (std::int64_t i = 0; i < size; ++i) {
-        const int thread = currentThread();
-        Thread& worker = workers[static_cast<std::size_t> (thread)];
-        // Filled in the worker's own vector, then swapped in: the threads would
-        // write the neighbouring vectors of the batch at every key otherwise.
-        std::vector<Key>& keys = worker.keys;
-        coboundaries.coboundary (columns[begin + i], worker.search, keys);
-        const bool unreduced =
-            keys.empty() ||
-            coboundaries.owner (*std::min_element (keys.begin(), keys.end())) ==
-                INVALID_SIMPLEX;
-        if (!unreduced) {
-          std::sort (keys.begin(), keys.end());
-          worker.column.assign (keys);
-          reduce (worker, thread);
-          worker.column.release (keys);
-        }
-        sorted[i] = !unreduced;
-        batch[i].swap (keys);
+        for (std::int64_t i = 0; i < static_cast<std::int64_t> (size); ++i)
+          sorted[i] = reduce_ahead (begin + i, currentThread(), batch[i]);
+        working += threadProcessorSeconds() - processor_time;
       }
-      working += threadProcessorSeconds() - processor_time;
+      // A batch whose threads ran less than half the time waited for a thread the
+      // system did not run: another process holds a core.
+      const double wall =
+          std::chrono::duration<double> (std::chrono::steady_clock::now() - started)
+              .count();
+      ++batches;
+      slow_batches += working < BUSY_EFFICIENCY * threads * wall;
+      if (slow_batches >= MIN_SLOW_BATCHES && slow_batches * 10 > batches)
+        threads = 1;
     }
-    // A batch whose threads ran less than half the time waited for a thread the
-    // system did not run: another process holds a core.
-    const double wall =
-        std::chrono::duration<double> (std::chrono::steady_clock::now() - started)
-            .count();
-    ++batches;
-    slow_batches += working < BUSY_EFFICIENCY * threads * wall;
-    if (slow_batches >= MIN_SLOW_BATCHES && slow_batches * 10 > batches)
-      threads = 1;
 
     // In order: reduced on by the columns of the batch paired before it, and paired.
     Thread& worker = workers.front();
-    for (std::int64_t i = 0; i < size; ++i) {
+    for (std::size_t i = 0; i < size; ++i) {
       std::vector<Key>& keys = batch[i];
       const SimplexIndex edge = columns[begin + i];
       if (keys.empty())
