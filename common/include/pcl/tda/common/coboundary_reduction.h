@@ -140,10 +140,9 @@ constexpr std::size_t MIN_SLOW_BATCHES = 3;
  * pivots whichever such additions made it (Edelsbrunner and Harer, Sec VII.1): the
  * pairs, hence the diagram, are those of the serial reduction, whatever the number
  * of threads. On one thread a batch is one column: the serial loop. Where another
- * process holds a core, a batch waits for the thread the system does
- * not run: from MIN_SLOW_BATCHES such batches (threads running less than
- * BUSY_EFFICIENCY of the time), if more than one in ten, the rest goes on one
- * thread.
+ * process holds a core, a batch waits for the thread the system does not run: from
+ * MIN_SLOW_BATCHES such batches (threads running less than BUSY_EFFICIENCY of the
+ * time), if more than one in ten, the rest goes on one thread.
  *
  * \a Coboundaries names a triangle by a \c Key ordered as the filtration and
  * provides:
@@ -216,23 +215,26 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
   // neighbouring vectors of a batch at every key otherwise). Returns whether it is
   // sorted: not when its oldest triangle had no owner (maybe an emergent pair), nor
   // when it has no triangle (an essential class).
-  const auto reduce_ahead =
-      [&] (std::size_t position, int thread, std::vector<Key>& keys) {
-        Thread& worker = workers[static_cast<std::size_t> (thread)];
-        coboundaries.coboundary (columns[position], worker.search, worker.keys);
-        const bool unreduced =
-            worker.keys.empty() ||
-            coboundaries.owner (*std::min_element (
-                worker.keys.begin(), worker.keys.end())) == INVALID_SIMPLEX;
-        if (!unreduced) {
-          std::sort (worker.keys.begin(), worker.keys.end());
-          worker.column.assign (worker.keys);
-          reduce (worker, thread);
-          worker.column.release (worker.keys);
-        }
-        keys.swap (worker.keys);
-        return !unreduced;
-      };
+  const auto reduce_ahead = [&] (std::size_t position,
+                                 int thread,
+                                 std::vector<Key>& keys) {
+    Thread& worker = workers[static_cast<std::size_t> (thread)];
+    coboundaries.coboundary (columns[position], worker.search, worker.keys);
+    // The oldest triangle first, so that the pass in order finds it again.
+    if (!worker.keys.empty())
+      std::iter_swap (worker.keys.begin(),
+                      std::min_element (worker.keys.begin(), worker.keys.end()));
+    const bool unreduced = worker.keys.empty() ||
+                           coboundaries.owner (worker.keys.front()) == INVALID_SIMPLEX;
+    if (!unreduced) {
+      std::sort (worker.keys.begin(), worker.keys.end());
+      worker.column.assign (worker.keys);
+      reduce (worker, thread);
+      worker.column.release (worker.keys);
+    }
+    keys.swap (worker.keys);
+    return !unreduced;
+  };
 
   std::size_t batches = 0, slow_batches = 0;
   // Per column of a batch: its keys, sorted or not.
@@ -279,17 +281,11 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
       if (keys.empty())
         continue; // an essential class
       if (!sorted[i]) {
-        const Key pivot = *std::min_element (keys.begin(), keys.end());
-        if (coboundaries.owner (pivot) == INVALID_SIMPLEX) {
-          coboundaries.setOwner (pivot, edge); // an emergent pair
+        if (coboundaries.owner (keys.front()) == INVALID_SIMPLEX) {
+          coboundaries.setOwner (keys.front(), edge); // an emergent pair
           continue;
         }
         std::sort (keys.begin(), keys.end());
-      }
-      else if (coboundaries.owner (keys.front()) == INVALID_SIMPLEX) {
-        coboundaries.setOwner (keys.front(), edge); // reduced in parallel
-        stored.store (edge, keys);
-        continue;
       }
       worker.column.assign (keys);
       reduce (worker, 0);
