@@ -1,8 +1,10 @@
 #include <pcl/tda/apps/huge_page_malloc.h>
 
 #include <gnu/libc-version.h>
+#include <malloc.h>
 #include <unistd.h>
 
+#include <climits>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -30,6 +32,17 @@ glibcHasHugePageMalloc ()
   int major = 0, minor = 0;
   return std::sscanf (gnu_get_libc_version(), "%d.%d", &major, &minor) == 2 &&
          (major > 2 || (major == 2 && minor >= 35));
+}
+
+/** Whether the user set the malloc setting that GLIBC_TUNABLES names \a tunable and
+ * the environment variable \a variable also sets. */
+bool
+userSetMalloc (const char* tunable, const char* variable)
+{
+  const char* tunables = std::getenv ("GLIBC_TUNABLES");
+  return std::getenv (variable) != nullptr ||
+         (tunables != nullptr &&
+          std::string (tunables).find (tunable) != std::string::npos);
 }
 
 } // namespace
@@ -60,6 +73,15 @@ restartWithHugePageMalloc (char** argv)
     setenv ("GLIBC_TUNABLES", current.c_str(), 1);
   else
     unsetenv ("GLIBC_TUNABLES");
+}
+
+void
+reuseFreedMemory ()
+{
+  if (!userSetMalloc ("glibc.malloc.mmap_threshold", "MALLOC_MMAP_THRESHOLD_"))
+    mallopt (M_MMAP_THRESHOLD, static_cast<int> (HEAP_BLOCK_LIMIT));
+  if (!userSetMalloc ("glibc.malloc.trim_threshold", "MALLOC_TRIM_THRESHOLD_"))
+    mallopt (M_TRIM_THRESHOLD, INT_MAX);
 }
 
 } // namespace tda

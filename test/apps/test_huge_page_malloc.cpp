@@ -7,7 +7,11 @@
 #include <gtest/gtest.h>
 
 #include "tool_runner.h"
+#include <sys/resource.h>
 
+#include <cstddef>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 
 using pcl::tda::test::run;
@@ -28,6 +32,25 @@ probe (const std::string& environment)
 }
 
 const std::string ARGUMENTS = "[a b]\n[]\n[c]\n";
+
+/** The block of faultsOfNewBlock(): through a volatile pointer, so that the compiler
+ * keeps the writes to it. */
+void* volatile block = nullptr;
+
+/** The page faults of this process while it writes a new block of \a bytes, which it
+ * frees after. */
+long
+faultsOfNewBlock (std::size_t bytes)
+{
+  rusage usage;
+  getrusage (RUSAGE_SELF, &usage);
+  const long before = usage.ru_minflt;
+  block = std::malloc (bytes);
+  std::memset (block, 1, bytes);
+  std::free (block);
+  getrusage (RUSAGE_SELF, &usage);
+  return usage.ru_minflt - before;
+}
 
 } // namespace
 
@@ -54,4 +77,18 @@ TEST (HugePageMalloc, KeepsTheUsersChoice)
   EXPECT_EQ (probe ("GLIBC_TUNABLES=glibc.malloc.arena_max=2:glibc.malloc.hugetlb=2"),
              "starts 1\ntunables glibc.malloc.arena_max=2:glibc.malloc.hugetlb=2\n" +
                  ARGUMENTS);
+}
+
+TEST (ReuseFreedMemory, AFreedBlockServesTheNextWithoutPageFaults)
+{
+#ifdef __SANITIZE_ADDRESS__
+  GTEST_SKIP() << "the address sanitizer brings its own malloc";
+#endif
+  pcl::tda::reuseFreedMemory();
+  // Larger than any block this program asked for before: new memory the first time.
+  constexpr std::size_t BYTES = std::size_t{24} << 20;
+  const long first = faultsOfNewBlock (BYTES);
+  const long second = faultsOfNewBlock (BYTES);
+  EXPECT_GT (first, 0);
+  EXPECT_LE (second, first / 10) << "the freed block went back to the system";
 }

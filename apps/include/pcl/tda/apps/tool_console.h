@@ -105,7 +105,8 @@ private:
  * with 0, fewer than \a least_arguments arguments print it and exit with 1; else
  * starts the tool again with huge pages for malloc (restartWithHugePageMalloc()),
  * unless its first argument is a PCD file of fewer than HUGE_PAGE_MALLOC_MIN_POINTS
- * points, where the restart would cost more than it saves; prints \a intro, reads the
+ * points, where the restart would cost more than it saves; has malloc reuse the memory
+ * the tool frees (reuseFreedMemory()); prints \a intro, reads the
  * options with \a parse and returns the exit code of \a run. A refusal (a
  * pcl::PCLException thrown by either) prints its message and exits with 1. */
 template <typename Options>
@@ -134,6 +135,7 @@ runTool (int argc,
   const std::optional<std::uint64_t> input_points = pcdPointCount (argv[1]);
   if (!input_points || *input_points >= HUGE_PAGE_MALLOC_MIN_POINTS)
     restartWithHugePageMalloc (argv);
+  reuseFreedMemory();
   print_intro();
   ToolConsole console;
   try {
