@@ -34,7 +34,8 @@ chooseClusterDistance (const FilteredComplex& complex,
                        double max_distance,
                        std::size_t min_cluster_size,
                        double gap_ratio,
-                       double min_distance)
+                       double min_distance,
+                       double piece_ratio)
 {
   ClusterDistanceChoice choice;
   choice.distance = max_distance;
@@ -42,25 +43,43 @@ chooseClusterDistance (const FilteredComplex& complex,
   // Replaying the negative edges (the minimum spanning forest) in filtration order
   // gives the components. A component becomes significant (a would-be cluster, +1 to
   // the count) when it first has significant_size points, and a merge of two
-  // significant components subtracts 1.
+  // significant components subtracts 1; but when the smaller of the two has fewer
+  // than piece_ratio times the points of the larger, it was a piece of the larger:
+  // it is taken off the count from the scale it counted from (its +1 cancelled)
+  // instead. A merged component counts from the earlier of its parts' scales.
   const std::size_t significant_size = std::max<std::size_t> (min_cluster_size, 2);
   const std::size_t num_vertices = complex.numVertices();
   UnionFind components (num_vertices);
   std::vector<bool> significant (num_vertices, false);
+  std::vector<double> counted_from (num_vertices, 0.0);
   std::vector<std::pair<double, int>> events; // (scale, +1 or -1)
   std::vector<double> nearest (num_vertices, std::numeric_limits<double>::infinity());
   for (const SimplexIndex e : h0.negativeEdges()) {
     const FilteredEdge& edge = complex.edges()[e];
     const SimplexIndex a = components.find (edge.source);
     const SimplexIndex b = components.find (edge.target);
+    const std::size_t size_a = components.setSize (a), size_b = components.setSize (b);
+    const double from_a = counted_from[a], from_b = counted_from[b];
     const bool both = significant[a] && significant[b];
     const bool either = significant[a] || significant[b];
     const SimplexIndex root = components.linkRoots (a, b);
     significant[root] = either || components.setSize (root) >= significant_size;
-    if (both)
-      events.emplace_back (edge.value, -1);
-    else if (!either && significant[root])
+    if (both) {
+      const bool a_smaller = size_a < size_b;
+      const double smaller = static_cast<double> (a_smaller ? size_a : size_b);
+      const double larger = static_cast<double> (a_smaller ? size_b : size_a);
+      if (smaller < piece_ratio * larger)
+        events.emplace_back (a_smaller ? from_a : from_b, -1);
+      else
+        events.emplace_back (edge.value, -1);
+      counted_from[root] = std::min (from_a, from_b);
+    }
+    else if (either)
+      counted_from[root] = significant[a] ? from_a : from_b;
+    else if (significant[root]) {
       events.emplace_back (edge.value, +1);
+      counted_from[root] = edge.value;
+    }
     if (edge.value > 0.0) {
       nearest[edge.source] = std::min (nearest[edge.source], edge.value);
       nearest[edge.target] = std::min (nearest[edge.target], edge.value);
@@ -84,7 +103,8 @@ chooseClusterDistance (const FilteredComplex& complex,
 
   // The count of significant components is a step function of the scale.
   StableStep chosen;
-  if (!chooseStableStep (events, floor, max_distance, gap_ratio, chosen))
+  if (!chooseStableStep (
+          events, floor, max_distance, gap_ratio, chosen, StableStepPreference::FINEST))
     return choice; // no significant component above the floor
   choice.low = chosen.low;
   choice.high = chosen.high;

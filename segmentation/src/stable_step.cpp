@@ -12,7 +12,8 @@ chooseStableStep (std::vector<std::pair<double, int>> events,
                   double floor,
                   double max_scale,
                   double gap_ratio,
-                  StableStep& step)
+                  StableStep& step,
+                  StableStepPreference preference)
 {
   struct Step {
     double low;
@@ -28,7 +29,10 @@ chooseStableStep (std::vector<std::pair<double, int>> events,
       count += events[e].second;
     const double high =
         e < events.size() ? std::min (events[e].first, max_scale) : max_scale;
-    if (count > 0)
+    if (count > 0 && !steps.empty() && steps.back().count == count &&
+        steps.back().high == low)
+      steps.back().high = high; // events that leave the count as it was
+    else if (count > 0)
       steps.push_back ({low, high, count});
     low = high;
   }
@@ -58,7 +62,7 @@ chooseStableStep (std::vector<std::pair<double, int>> events,
   const auto is_clear = [&] (const Step* s) {
     return length (s) >= enough && length (s) >= gap_ratio * longest_other_split (s);
   };
-  if (finest && !is_clear (split))
+  if (finest && (preference == StableStepPreference::FINEST || !is_clear (split)))
     split = finest;
   const Step* chosen = split && (length (split) >= enough || !whole) ? split : whole;
   if (!chosen)

@@ -468,6 +468,12 @@ TEST (PersistentEuclideanClusterExtraction, RefusesBadInputWithClearErrors)
   bad_ratio.setAutoMaxDistance (true);
   bad_ratio.setAutoGapRatio (1.0);
   EXPECT_TRUE (contains (errorOf (bad_ratio), "gap ratio"));
+  bad_ratio.setAutoGapRatio (1.5);
+  for (const double piece_ratio :
+       {-0.1, 1.0, std::numeric_limits<double>::quiet_NaN()}) {
+    bad_ratio.setAutoPieceRatio (piece_ratio);
+    EXPECT_TRUE (contains (errorOf (bad_ratio), "piece ratio")) << piece_ratio;
+  }
 
   // With the search object, a radius graph over the memory limit is refused before
   // it is stored; the limit is the only obstacle. Without one, the forest is found
@@ -617,6 +623,41 @@ TEST (PersistentEuclideanClusterExtraction, AutoDistanceRecoversObjectCount)
     }
   EXPECT_EQ (total, 240u);
   EXPECT_GE (recovered, 211u);
+}
+
+TEST (PersistentEuclideanClusterExtraction,
+      AutoDistanceTakesASmallPieceForPartOfItsObject)
+{
+  // Points 1 apart on a line: object A of 200 points, 3 beyond it a piece of 30
+  // points, 30 beyond that object B of 200 points. The would-be clusters appear at 1;
+  // the piece merges into A at 3 and A into B at 30.
+  Cloud::Ptr line (new Cloud);
+  const auto add_run = [&line] (float start, int points) {
+    for (int i = 0; i < points; ++i)
+      line->push_back ({start + static_cast<float> (i), 0.0f, 0.0f});
+  };
+  add_run (0.0f, 200);   // A: 0 to 199
+  add_run (202.0f, 30);  // the piece: 202 to 231
+  add_run (261.0f, 200); // B: 261 to 460
+  for (const double piece_ratio : {Extraction::DEFAULT_PIECE_RATIO, 0.0}) {
+    Extraction extraction;
+    extraction.setAutoMaxDistance (true);
+    extraction.setAutoPieceRatio (piece_ratio);
+    const auto clusters = ourClusters (line, 100.0, 20, 1000000, &extraction);
+    if (piece_ratio > 0.0) {
+      // 30 < 0.2 x 230: a piece of A; 2 clusters on [1, 30), at sqrt(30).
+      EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (30.0), 1e-9);
+      ASSERT_EQ (clusters.size(), 2u);
+      EXPECT_EQ (clusters[0].indices.size() + clusters[1].indices.size(), 430u);
+      EXPECT_EQ (std::min (clusters[0].indices.size(), clusters[1].indices.size()),
+                 200u);
+    }
+    else {
+      // Counted: 3 clusters on [1, 3), stable over a factor of 3, at sqrt(3).
+      EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (3.0), 1e-9);
+      EXPECT_EQ (clusters.size(), 3u);
+    }
+  }
 }
 
 TEST (PersistentEuclideanClusterExtraction, AutoDistanceF1OnOurGenerator)

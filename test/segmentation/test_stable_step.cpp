@@ -54,6 +54,43 @@ TEST (StableStep, TakesTheLongestSplitWhenClear)
   EXPECT_TRUE (step.clear);
 }
 
+TEST (StableStep, FinestPreferenceTakesTheFinestStableSplitAlsoWhenALaterOneIsClear)
+{
+  // 3 on [1, 1.6), 2 on [1.6, 10), 1 from 10, as above: the split into 2 is clear,
+  // but the split into 3 is stable and comes first.
+  const Events events = {{1.0, +1}, {1.0, +1}, {1.0, +1}, {1.6, -1}, {10.0, -1}};
+  StableStep step;
+  ASSERT_TRUE (chooseStableStep (
+      events, 0.5, 100.0, 1.5, step, pcl::tda::StableStepPreference::FINEST));
+  EXPECT_EQ (step.count, 3u);
+  EXPECT_DOUBLE_EQ (step.low, 1.0);
+  EXPECT_DOUBLE_EQ (step.high, 1.6);
+  EXPECT_FALSE (step.clear);
+  // Without a stable split, as the other preference: one cluster.
+  ASSERT_TRUE (chooseStableStep ({{1.0, +1}, {1.0, +1}, {1.2, -1}},
+                                 0.5,
+                                 100.0,
+                                 1.5,
+                                 step,
+                                 pcl::tda::StableStepPreference::FINEST));
+  EXPECT_EQ (step.count, 1u);
+  EXPECT_DOUBLE_EQ (step.low, 1.2);
+}
+
+TEST (StableStep, EventsThatLeaveTheCountAsItWasDoNotEndAStep)
+{
+  // 2 on [1, 3): a component appears and another one goes at 1.2; 1 from 3.
+  const Events events = {{1.0, +1}, {1.0, +1}, {1.2, +1}, {1.2, -1}, {3.0, -1}};
+  for (const auto preference : {pcl::tda::StableStepPreference::CLEAR_OR_FINEST,
+                                pcl::tda::StableStepPreference::FINEST}) {
+    StableStep step;
+    ASSERT_TRUE (chooseStableStep (events, 0.5, 4.0, 1.5, step, preference));
+    EXPECT_EQ (step.count, 2u);
+    EXPECT_DOUBLE_EQ (step.low, 1.0);
+    EXPECT_DOUBLE_EQ (step.high, 3.0);
+  }
+}
+
 TEST (StableStep, SplitsShorterThanTheGapRatioAreSkipped)
 {
   // Fragments: 2 on [1, 1.2), then 3 objects on [1.2, 1.3) too short, 2 on [1.3, 4).

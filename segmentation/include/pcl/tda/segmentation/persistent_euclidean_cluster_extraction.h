@@ -46,6 +46,9 @@ struct ClusterDistanceChoice {
  * \param[in] gap_ratio the ratio q (> 1): a split must be stable over a factor q
  * of scales to be taken, and q times longer (in log) than any other to be clear
  * \param[in] min_distance a floor from the caller, e.g. a voxel grid's leaf size
+ * \param[in] piece_ratio in [0, 1): a significant component that merges into one
+ * with more than 1 / piece_ratio times its points is a piece of it, not a would-be
+ * cluster (0: none is)
  * \return the distance, in (0, max_distance], and how it was chosen; max_distance,
  * not clear, when the floor is not below it or no significant component exists */
 ClusterDistanceChoice
@@ -54,7 +57,8 @@ chooseClusterDistance (const FilteredComplex& complex,
                        double max_distance,
                        std::size_t min_cluster_size,
                        double gap_ratio,
-                       double min_distance);
+                       double min_distance,
+                       double piece_ratio);
 
 /** \brief Euclidean cluster extraction by topological persistence (thesis Sec 4.1,
  * Alg 4.6): a drop-in replacement for pcl::EuclideanClusterExtraction that also
@@ -111,6 +115,8 @@ public:
 
   /** \brief Default of setAutoGapRatio(). */
   static constexpr double DEFAULT_GAP_RATIO = 1.5;
+  /** \brief Default of setAutoPieceRatio(). */
+  static constexpr double DEFAULT_PIECE_RATIO = 0.2;
 
   PersistentEuclideanClusterExtraction() = default;
 
@@ -244,19 +250,22 @@ public:
    * 1. Would-be clusters. Replaying the minimum spanning forest's edges (the H0
    *    deaths) in order, a component becomes significant when it first has
    *    max(min cluster size, 2) points; the count of significant components rises
-   *    by 1 there and falls by 1 when two significant components merge. It is a step
-   *    function of the scale.
+   *    by 1 there and falls by 1 when two significant components merge. But a
+   *    significant component that merges into one with more than 1 / p times its
+   *    points, p the piece ratio (setAutoPieceRatio(), 0.2), is a piece of it (a
+   *    part of a scan cut off by a gap in the sampling, a shadow): it is taken off
+   *    the count over all the scales it counted. The count is a step function of the
+   *    scale.
    * 2. The floor: the larger of the sampling scale, the median nearest-neighbour
    *    distance of the points (each point's shortest spanning forest edge), and the
    *    caller's floor (setAutoMinDistance(), e.g. a voxel leaf). The distance is
    *    never below it.
    * 3. The candidates: the steps of the count over (floor, max distance], each
-   *    [low, high) measured by log(high / low). The longest step with two clusters
-   *    or more is taken when it is clear (see 4.); otherwise the earliest (finest)
-   *    step with two clusters or more that spans a factor of at least q: the first
-   *    split that is stable (close objects merge at the later steps, which may
-   *    well be a little longer). When no split spans q, the longest step with one
-   *    cluster (all points one object) is taken, if any.
+   *    [low, high) measured by log(high / low). The earliest (finest) step with two
+   *    clusters or more that spans a factor of at least q is taken: the first split
+   *    that is stable (objects standing close together merge at the later steps,
+   *    which may well be much longer). When no split spans q, the longest step with
+   *    one cluster (all points one object) is taken, if any.
    * 4. The distance is the geometric middle sqrt(low high) of that step. The choice
    *    is clear when the step spans a factor of at least q and is at least q times
    *    as long (in log) as every other step with two clusters or more; otherwise
@@ -266,7 +275,9 @@ public:
    * deterministic and, as the diagram, independent of the input order and of the
    * number of threads. Max distance bounds the search and should be a generous upper
    * bound, e.g. twice the gap expected between objects; a one-cluster step ending
-   * there counts only when no split is clear. */
+   * there counts only when no split is stable. An object with fewer than p times the
+   * points of an object it stands next to (closer than its own gaps) is taken as a
+   * piece of it: set the piece ratio to 0 where such objects are expected. */
   void
   setAutoMaxDistance (bool enabled)
   {
@@ -293,6 +304,21 @@ public:
   getAutoGapRatio () const
   {
     return gap_ratio_;
+  }
+
+  /** \brief Sets the piece ratio p (in [0, 1), default DEFAULT_PIECE_RATIO) of the
+   * rule of setAutoMaxDistance(): a would-be cluster that merges into one with more
+   * than 1 / p times its points is a piece of it, not counted (0: none is). */
+  void
+  setAutoPieceRatio (double ratio)
+  {
+    piece_ratio_ = ratio;
+  }
+
+  double
+  getAutoPieceRatio () const
+  {
+    return piece_ratio_;
   }
 
   /** \brief Sets a floor (>= 0, default 0) of the rule of setAutoMaxDistance(): the
@@ -402,6 +428,7 @@ private:
   unsigned int filtration_steps_ = 0;
   bool auto_max_distance_ = false;
   double gap_ratio_ = DEFAULT_GAP_RATIO;
+  double piece_ratio_ = DEFAULT_PIECE_RATIO;
   double auto_min_distance_ = 0.0;
 
   PersistenceDiagram diagram_;

@@ -53,6 +53,13 @@ PersistentEuclideanClusterExtraction<PointT>::checkParameters() const
                auto_min_distance_);
     return false;
   }
+  if (auto_max_distance_ && !(piece_ratio_ >= 0.0 && piece_ratio_ < 1.0)) {
+    PCL_ERROR ("[pcl::tda::%s::extract] The auto piece ratio must be at least 0 and "
+               "below 1, not %g.\n",
+               name,
+               piece_ratio_);
+    return false;
+  }
   return true;
 }
 
@@ -197,7 +204,8 @@ PersistentEuclideanClusterExtraction<PointT>::extract (
                                                                 max_distance_,
                                                                 min_pts_per_cluster_,
                                                                 gap_ratio_,
-                                                                auto_min_distance_);
+                                                                auto_min_distance_,
+                                                                piece_ratio_);
     chosen_distance_ = choice.distance;
     auto_distance_is_clear_ = choice.clear;
     if (!choice.clear)
