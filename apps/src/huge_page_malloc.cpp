@@ -34,8 +34,8 @@ glibcHasHugePageMalloc ()
          (major > 2 || (major == 2 && minor >= 35));
 }
 
-/** Whether the user set the malloc setting that GLIBC_TUNABLES names \a tunable and
- * the environment variable \a variable also sets. */
+/** Whether the user chose a malloc setting: \a tunable in GLIBC_TUNABLES, or the
+ * environment variable \a variable. */
 bool
 userSetMalloc (const char* tunable, const char* variable)
 {

@@ -53,10 +53,10 @@ constexpr std::size_t HEAP_BLOCK_LIMIT = std::size_t{32} << 20;
  * are freed) on its own and unmaps it when it is freed, and gives the top of its heap
  * back; the next array, often of the same size, is written into memory new to the
  * process again, a page fault per page. Measured on a 2-core virtual machine, where
- * a first write costs 1-3 ms per MiB: `pcl_tda_barcode` took 0.15-0.18 s instead of
- * 0.20-0.23 s on a 100k-point subsample of kinect_frame.pcd, 0.044 s instead of
- * 0.063 s on the table scene after a 1 cm voxel grid, with the same peak memory
- * (doc/performance.md). */
+ * a first write costs 1-3 ms per MiB: `pcl_tda_barcode` took 0.165-0.175 s instead
+ * of 0.208-0.215 s on a 100k-point subsample of kinect_frame.pcd, 0.054-0.069 s
+ * instead of 0.076-0.084 s on the table scene after a 1 cm voxel grid, with the same
+ * peak memory (doc/performance.md). */
 void
 reuseFreedMemory ();
 
