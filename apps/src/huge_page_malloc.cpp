@@ -34,15 +34,13 @@ glibcHasHugePageMalloc ()
          (major > 2 || (major == 2 && minor >= 35));
 }
 
-/** Whether the user chose a malloc setting: \a tunable in GLIBC_TUNABLES, or the
- * environment variable \a variable. */
+/** Whether GLIBC_TUNABLES names \a tunable: the user's (or the restart's) choice. */
 bool
-userSetMalloc (const char* tunable, const char* variable)
+tunableChosen (const char* tunable)
 {
   const char* tunables = std::getenv ("GLIBC_TUNABLES");
-  return std::getenv (variable) != nullptr ||
-         (tunables != nullptr &&
-          std::string (tunables).find (tunable) != std::string::npos);
+  return tunables != nullptr &&
+         std::string (tunables).find (tunable) != std::string::npos;
 }
 
 } // namespace
@@ -59,8 +57,7 @@ restartWithHugePageMalloc (char** argv)
   const char* tunables = std::getenv ("GLIBC_TUNABLES");
   const bool had_tunables = tunables != nullptr;
   const std::string current = had_tunables ? tunables : "";
-  if (current.find ("glibc.malloc.hugetlb") != std::string::npos ||
-      !hugePageMallocAvailable())
+  if (tunableChosen ("glibc.malloc.hugetlb") || !hugePageMallocAvailable())
     return;
   const std::string wanted = current.empty() ? HUGE_PAGE_MALLOC_TUNABLE
                                              : current + ":" + HUGE_PAGE_MALLOC_TUNABLE;
@@ -78,9 +75,12 @@ restartWithHugePageMalloc (char** argv)
 void
 reuseFreedMemory ()
 {
-  if (!userSetMalloc ("glibc.malloc.mmap_threshold", "MALLOC_MMAP_THRESHOLD_"))
+  // MALLOC_*_THRESHOLD_: glibc's older names of the same settings.
+  if (!tunableChosen ("glibc.malloc.mmap_threshold") &&
+      !std::getenv ("MALLOC_MMAP_THRESHOLD_"))
     mallopt (M_MMAP_THRESHOLD, static_cast<int> (HEAP_BLOCK_LIMIT));
-  if (!userSetMalloc ("glibc.malloc.trim_threshold", "MALLOC_TRIM_THRESHOLD_"))
+  if (!tunableChosen ("glibc.malloc.trim_threshold") &&
+      !std::getenv ("MALLOC_TRIM_THRESHOLD_"))
     mallopt (M_TRIM_THRESHOLD, INT_MAX);
 }
 
