@@ -10,10 +10,10 @@
 #include <array>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <limits>
-#include <optional>
 
 namespace pcl {
 namespace tda {
@@ -143,19 +143,6 @@ openPCDFile (const std::string& path, std::ifstream& file)
 }
 
 } // namespace
-
-std::optional<std::uint64_t>
-pcdPointCount (const std::string& path)
-{
-  try {
-    std::ifstream file;
-    const PCDLayout layout = openPCDFile (path, file);
-    return std::uint64_t{layout.header.width} * layout.header.height;
-  }
-  catch (const pcl::IOException&) {
-    return std::nullopt;
-  }
-}
 
 void
 loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud)

@@ -1,11 +1,12 @@
 #include <pcl/tda/apps/huge_page_malloc.h>
 
-#include <gnu/libc-version.h>
 #include <malloc.h>
+#include <sys/mman.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <climits>
-#include <cstdio>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <string>
@@ -15,26 +16,13 @@ namespace tda {
 
 namespace {
 
-/** Whether the kernel gives transparent huge pages to memory that asks for them
- * ("always" or "madvise" mode). */
-bool
-transparentHugePagesAvailable ()
-{
-  std::ifstream file ("/sys/kernel/mm/transparent_hugepage/enabled");
-  std::string modes;
-  return std::getline (file, modes) && modes.find ("[never]") == std::string::npos;
-}
+/** glibc's padding of its heap when it grows (M_TOP_PAD), 128 KiB. */
+constexpr int DEFAULT_TOP_PAD = 128 << 10;
 
-/** Whether glibc knows the tunable (2.35 and later). */
-bool
-glibcHasHugePageMalloc ()
-{
-  int major = 0, minor = 0;
-  return std::sscanf (gnu_get_libc_version(), "%d.%d", &major, &minor) == 2 &&
-         (major > 2 || (major == 2 && minor >= 35));
-}
+/** The block backHeapWithHugePages() asks for to have the heap grow. */
+constexpr std::size_t GROWTH_BLOCK = std::size_t{1} << 20;
 
-/** Whether GLIBC_TUNABLES names \a tunable: the user's (or the restart's) choice. */
+/** Whether GLIBC_TUNABLES names \a tunable: the user's choice. */
 bool
 tunableChosen (const char* tunable)
 {
@@ -43,33 +31,53 @@ tunableChosen (const char* tunable)
          std::string (tunables).find (tunable) != std::string::npos;
 }
 
+/** Whether the process has a limit on its address space or its data size. */
+bool
+memoryLimited ()
+{
+  for (const int resource : {RLIMIT_AS, RLIMIT_DATA}) {
+    rlimit limit;
+    if (getrlimit (resource, &limit) != 0 || limit.rlim_cur != RLIM_INFINITY)
+      return true;
+  }
+  return false;
+}
+
 } // namespace
 
 bool
-hugePageMallocAvailable ()
+transparentHugePagesAvailable ()
 {
-  return glibcHasHugePageMalloc() && transparentHugePagesAvailable();
+  std::ifstream file ("/sys/kernel/mm/transparent_hugepage/enabled");
+  std::string modes;
+  return std::getline (file, modes) && modes.find ("[never]") == std::string::npos;
 }
 
-void
-restartWithHugePageMalloc (char** argv)
+bool
+backHeapWithHugePages (std::size_t bytes)
 {
-  const char* tunables = std::getenv ("GLIBC_TUNABLES");
-  const bool had_tunables = tunables != nullptr;
-  const std::string current = had_tunables ? tunables : "";
-  if (tunableChosen ("glibc.malloc.hugetlb") || !hugePageMallocAvailable())
-    return;
-  const std::string wanted = current.empty() ? HUGE_PAGE_MALLOC_TUNABLE
-                                             : current + ":" + HUGE_PAGE_MALLOC_TUNABLE;
-  if (setenv ("GLIBC_TUNABLES", wanted.c_str(), 1) != 0)
-    return;
-  std::fflush (nullptr);
-  execv ("/proc/self/exe", argv);
-  // Not restarted: the tool goes on as it is, with the environment it was given.
-  if (had_tunables)
-    setenv ("GLIBC_TUNABLES", current.c_str(), 1);
-  else
-    unsetenv ("GLIBC_TUNABLES");
+  if (bytes > INT_MAX || tunableChosen ("glibc.malloc.hugetlb") ||
+      tunableChosen ("glibc.malloc.top_pad") || std::getenv ("MALLOC_TOP_PAD_") ||
+      !transparentHugePagesAvailable() || memoryLimited())
+    return false;
+  // The heap grows by the block and the padding at once, in address space only.
+  mallopt (M_TOP_PAD, static_cast<int> (bytes));
+  char* const block = static_cast<char*> (std::malloc (GROWTH_BLOCK));
+  mallopt (M_TOP_PAD, DEFAULT_TOP_PAD);
+  if (block == nullptr)
+    return false;
+  char* const heap_end = static_cast<char*> (sbrk (0));
+  const auto page = static_cast<std::uintptr_t> (sysconf (_SC_PAGESIZE));
+  char* const begin =
+      reinterpret_cast<char*> (reinterpret_cast<std::uintptr_t> (block) & ~(page - 1));
+  // Anywhere else, the block is not on the heap that grew.
+  const bool on_grown_heap =
+      begin < heap_end &&
+      static_cast<std::size_t> (heap_end - begin) <= bytes + GROWTH_BLOCK + page;
+  const bool advised =
+      on_grown_heap && madvise (begin, heap_end - begin, MADV_HUGEPAGE) == 0;
+  std::free (block);
+  return advised;
 }
 
 void

@@ -1,23 +1,43 @@
-// A program for test_huge_page_malloc: counts its starts in PROBE_STARTS, calls
-// restartWithHugePageMalloc(), then prints the starts, GLIBC_TUNABLES ("-" when
-// unset) and its arguments, one per line between brackets.
+// A program for test_huge_page_malloc: prepares malloc as the tools do
+// (reuseFreedMemory(), backHeapWithHugePages()), writes a new block of 24 MiB, and
+// prints whether the heap was advised and the page faults of the write.
 
 #include <pcl/tda/apps/huge_page_malloc.h>
 
+#include <sys/resource.h>
+
+#include <cstddef>
 #include <cstdio>
 #include <cstdlib>
-#include <string>
+#include <cstring>
+
+namespace {
+
+/** The minor page faults of this process so far. */
+long
+pageFaults ()
+{
+  rusage usage;
+  getrusage (RUSAGE_SELF, &usage);
+  return usage.ru_minflt;
+}
+
+/** The block, through a volatile pointer, so that the compiler keeps the writes. */
+void* volatile block = nullptr;
+
+} // namespace
 
 int
-main (int argc, char** argv)
+main ()
 {
-  const char* starts = std::getenv ("PROBE_STARTS");
-  const std::string count = std::to_string ((starts ? std::atoi (starts) : 0) + 1);
-  setenv ("PROBE_STARTS", count.c_str(), 1);
-  pcl::tda::restartWithHugePageMalloc (argv);
-  const char* tunables = std::getenv ("GLIBC_TUNABLES");
-  std::printf ("starts %s\ntunables %s\n", count.c_str(), tunables ? tunables : "-");
-  for (int i = 1; i < argc; ++i)
-    std::printf ("[%s]\n", argv[i]);
+  pcl::tda::reuseFreedMemory();
+  const bool advised = pcl::tda::backHeapWithHugePages();
+  constexpr std::size_t BYTES = std::size_t{24} << 20;
+  const long before = pageFaults();
+  block = std::malloc (BYTES);
+  std::memset (block, 1, BYTES);
+  const long faults = pageFaults() - before;
+  std::free (block);
+  std::printf ("advised %d\nfaults %ld\n", advised ? 1 : 0, faults);
   return 0;
 }

@@ -18,7 +18,6 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <sstream>
 
 using namespace pcl::tda;
@@ -194,32 +193,6 @@ TEST (CloudFiles, RefusesMalformedFilesSayingWhy)
         << content.substr (0, 400) << "\nrefusal: " << refusal (path)
         << "\nexpected: " << message;
   }
-}
-
-TEST (CloudFiles, PointCountOfTheHeaderOnly)
-{
-  // The header's WIDTH x HEIGHT, also of an organized cloud; none for what
-  // loadPointCloudFile() refuses.
-  const std::string points = "0 0 0\n1 0 0\n2 0 0\n3 0 0\n4 0 0\n5 0 0\n";
-  const std::string listed = temporaryPath ("listed.pcd");
-  writeFile (listed, pcdHeader ("x y z", "4 4 4", "F F F", 6, "ascii") + points);
-  EXPECT_EQ (pcdPointCount (listed), std::optional<std::uint64_t> (6));
-  const std::string organized = temporaryPath ("organized.pcd");
-  writeFile (organized,
-             pcdHeader ("x y z", "4 4 4", "F F F", 6, "ascii", 3, 2) + points);
-  EXPECT_EQ (pcdPointCount (organized), std::optional<std::uint64_t> (6));
-  const std::string folder = temporaryPath ("folder.pcd");
-  std::filesystem::create_directories (folder);
-  EXPECT_EQ (pcdPointCount (folder), std::nullopt);
-  EXPECT_EQ (pcdPointCount (temporaryPath ("missing.pcd")), std::nullopt);
-  for (const auto& [content, message] : pcl::tda::test::malformedPCDFiles()) {
-    const std::string path = temporaryPath ("malformed.pcd");
-    writeFile (path, content);
-    if (refusal (path).find ("is not a valid PCD file") != std::string::npos) {
-      EXPECT_EQ (pcdPointCount (path), std::nullopt) << message;
-    }
-  }
-  EXPECT_EQ (pcdPointCount ("circle"), std::nullopt); // a tool's other first argument
 }
 
 TEST (CloudFiles, RefusesAHugeClaimAtOnce)

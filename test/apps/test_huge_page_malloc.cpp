@@ -1,6 +1,6 @@
-// Tests of restartWithHugePageMalloc(): the tools start once more with glibc's malloc
-// on transparent huge pages, with the same arguments, and leave a GLIBC_TUNABLES
-// that already chooses otherwise as it is.
+// Tests of the way the tools prepare glibc's malloc: the heap backed with transparent
+// huge pages (a choice of the user's left as it is), and freed blocks kept for the
+// next.
 
 #include <pcl/tda/apps/huge_page_malloc.h>
 
@@ -10,9 +10,11 @@
 #include <sys/resource.h>
 
 #include <cstddef>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <utility>
 
 using pcl::tda::test::run;
 
@@ -20,18 +22,25 @@ namespace {
 
 const std::string PROBE = std::string (PCL_TDA_BIN_DIR) + "/huge_page_malloc_probe";
 
-/** The probe's output with \a environment (e.g. "GLIBC_TUNABLES=x") and its
- * arguments 'a b', '' and 'c'. */
-std::string
-probe (const std::string& environment)
-{
-  const auto result = run ("env -u GLIBC_TUNABLES -u PROBE_STARTS " + environment +
-                           " " + PROBE + " 'a b' '' c");
-  EXPECT_EQ (result.exit_code, 0) << result.output;
-  return result.output;
-}
+/** The 4 KiB pages of the probe's block. */
+constexpr long PROBE_PAGES = (24 << 20) / 4096;
 
-const std::string ARGUMENTS = "[a b]\n[]\n[c]\n";
+/** Whether the probe's heap was advised, and the page faults of its write of 24 MiB,
+ * run by sh with \a setup (e.g. "GLIBC_TUNABLES=x", "ulimit -v 8000000;") before it. */
+std::pair<int, long>
+probe (const std::string& setup)
+{
+  const auto result =
+      run ("unset GLIBC_TUNABLES MALLOC_TOP_PAD_; " + setup + " " + PROBE);
+  EXPECT_EQ (result.exit_code, 0) << result.output;
+  int advised = -1;
+  long faults = -1;
+  EXPECT_EQ (
+      std::sscanf (result.output.c_str(), "advised %d\nfaults %ld", &advised, &faults),
+      2)
+      << result.output;
+  return {advised, faults};
+}
 
 /** The block of faultsOfNewBlock(): through a volatile pointer, so that the compiler
  * keeps the writes to it. */
@@ -54,29 +63,31 @@ faultsOfNewBlock (std::size_t bytes)
 
 } // namespace
 
-TEST (HugePageMalloc, RestartsOnceWithTheTunableAndTheSameArguments)
+TEST (HugePageHeap, NewBlocksAreWrittenInHugePages)
 {
-  if (!pcl::tda::hugePageMallocAvailable())
-    GTEST_SKIP() << "no transparent huge pages or glibc older than 2.35 here";
-  EXPECT_EQ (probe (""), "starts 2\ntunables glibc.malloc.hugetlb=1\n" + ARGUMENTS);
+#ifdef __SANITIZE_ADDRESS__
+  GTEST_SKIP() << "the address sanitizer brings its own malloc";
+#endif
+  if (!pcl::tda::transparentHugePagesAvailable())
+    GTEST_SKIP() << "transparent huge pages are off here";
+  const auto [advised, faults] = probe ("");
+  EXPECT_EQ (advised, 1);
+  // 12 huge pages, and 4 KiB ones up to the first 2 MiB boundary of the heap: 6,144
+  // faults in 4 KiB pages.
+  EXPECT_LE (faults, PROBE_PAGES / 8);
 }
 
-TEST (HugePageMalloc, AddsTheTunableToOtherTunables)
+TEST (HugePageHeap, KeepsTheUsersChoiceAndLimits)
 {
-  if (!pcl::tda::hugePageMallocAvailable())
-    GTEST_SKIP() << "no transparent huge pages or glibc older than 2.35 here";
-  EXPECT_EQ (probe ("GLIBC_TUNABLES=glibc.malloc.arena_max=2"),
-             "starts 2\ntunables glibc.malloc.arena_max=2:glibc.malloc.hugetlb=1\n" +
-                 ARGUMENTS);
-}
-
-TEST (HugePageMalloc, KeepsTheUsersChoice)
-{
-  EXPECT_EQ (probe ("GLIBC_TUNABLES=glibc.malloc.hugetlb=0"),
-             "starts 1\ntunables glibc.malloc.hugetlb=0\n" + ARGUMENTS);
-  EXPECT_EQ (probe ("GLIBC_TUNABLES=glibc.malloc.arena_max=2:glibc.malloc.hugetlb=2"),
-             "starts 1\ntunables glibc.malloc.arena_max=2:glibc.malloc.hugetlb=2\n" +
-                 ARGUMENTS);
+  for (const std::string setup : {"GLIBC_TUNABLES=glibc.malloc.hugetlb=0",
+                                  "GLIBC_TUNABLES=glibc.malloc.top_pad=0",
+                                  "MALLOC_TOP_PAD_=4096",
+                                  "ulimit -v 8000000;",
+                                  "ulimit -d 8000000;"}) {
+    const auto [advised, faults] = probe (setup);
+    EXPECT_EQ (advised, 0) << setup;
+    EXPECT_GT (faults, 0) << setup;
+  }
 }
 
 TEST (ReuseFreedMemory, AFreedBlockServesTheNextWithoutPageFaults)

@@ -7,8 +7,6 @@
 
 #include <Eigen/Geometry>
 
-#include <cstdint>
-#include <optional>
 #include <string>
 
 namespace pcl {
@@ -23,12 +21,6 @@ namespace tda {
  * \throws pcl::IOException naming the file and saying what is wrong with it */
 void
 loadPointCloudFile (const std::string& path, pcl::PCLPointCloud2& cloud);
-
-/** \brief The number of points (WIDTH x HEIGHT) that the header of the PCD file at
- * \a path declares, checked as loadPointCloudFile() checks it but without reading
- * the points; none when \a path is not a regular file with a valid PCD header. */
-std::optional<std::uint64_t>
-pcdPointCount (const std::string& path);
 
 /** \brief loadPointCloudFile() converted to points of type \a PointT. */
 template <typename PointT>

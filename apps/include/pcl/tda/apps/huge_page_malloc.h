@@ -5,39 +5,38 @@
 namespace pcl {
 namespace tda {
 
-/** \brief The tunable that has glibc's malloc back the memory it takes from the
- * system with transparent huge pages (glibc 2.35 and later). */
-constexpr const char* HUGE_PAGE_MALLOC_TUNABLE = "glibc.malloc.hugetlb=1";
-
-/** \brief The fewest points of a tool's input for which a tool restarts with huge
- * pages for malloc (see runTool()). The restart costs 5-7 ms, the start of a tool;
- * measured on a 2-core virtual machine, `pcl_tda_barcode` took 9.8 ms without it
- * and 17.1 ms with it on bunny.pcd (397 points), 21.4 and 26.7 ms on a 3,782-point
- * scan, and was within 2 ms either way at 10,000-14,000 points, while tools that do
- * more per point (`pcl_tda_holes`, `pcl_tda_regions`) gained 8 ms at 13,704 points
- * and every tool gains more on larger inputs. */
-constexpr unsigned HUGE_PAGE_MALLOC_MIN_POINTS = 5000;
-
-/** \brief Whether malloc can be given huge pages here: glibc 2.35 or later (which
- * knows HUGE_PAGE_MALLOC_TUNABLE) and transparent huge pages not off ("always" or
- * "madvise" mode). */
+/** \brief Whether the kernel gives transparent huge pages to memory that asks for
+ * them ("always" or "madvise" mode). */
 bool
-hugePageMallocAvailable ();
+transparentHugePagesAvailable ();
 
-/** \brief Starts the tool again, as the same program with the same arguments
- * (execv() of /proc/self/exe), with HUGE_PAGE_MALLOC_TUNABLE added to GLIBC_TUNABLES;
- * returns, and the tool goes on as it is, when !hugePageMallocAvailable(),
- * GLIBC_TUNABLES already says how malloc takes huge pages (also after the restart), or
- * the restart fails.
+/** \brief How much of malloc's heap a tool backs with huge pages
+ * (backHeapWithHugePages()): 1 GiB of address space, of which the process uses
+ * (and the system gives it) only what it writes; more than any tool takes from the
+ * heap on the inputs of doc/benchmarks_real_scans.md up to 1M points. */
+constexpr std::size_t HUGE_PAGE_HEAP_BYTES = std::size_t{1} << 30;
+
+/** \brief Grows glibc's malloc heap by \a bytes at once and asks the kernel to back
+ * that part with transparent huge pages (madvise() with MADV_HUGEPAGE), so that the
+ * blocks malloc takes from it next are written 2 MiB at a time. Returns whether the
+ * heap was advised. Does nothing and returns false when transparent huge pages are
+ * off, when the user chose how malloc takes huge pages or pads its heap
+ * (glibc.malloc.hugetlb or glibc.malloc.top_pad in GLIBC_TUNABLES, or
+ * MALLOC_TOP_PAD_), when the address space or data size of the process is limited
+ * (setrlimit(), `ulimit -v` or `-d`), where the heap could not grow, or where
+ * malloc is not glibc's heap (e.g. under the address sanitizer).
  *
  * Why: a tool writes its arrays once, into memory that is new to the process, and
  * each 4 KiB page of it costs a page fault the first time it is written; on a
  * virtual machine a fault can cost 10 microseconds, a 2 MiB huge page about the
- * same for 512 times the memory. glibc reads its tunables only when a program
- * starts, hence the restart, before the tool prints anything; it takes about as long
- * as the start of a tool (a few milliseconds). */
-void
-restartWithHugePageMalloc (char** argv);
+ * same for 512 times the memory. Call it at the start of the program, after
+ * reuseFreedMemory() (which keeps the blocks of up to HEAP_BLOCK_LIMIT on the heap).
+ * glibc's own tunable for this (glibc.malloc.hugetlb=1) is read only when a program
+ * starts. Measured on a 2-core virtual machine (doc/performance.md):
+ * `pcl_tda_barcode` on the table scene after a 1 cm voxel grid took 0.055 s with it
+ * and 0.087-0.116 s without. */
+bool
+backHeapWithHugePages (std::size_t bytes = HUGE_PAGE_HEAP_BYTES);
 
 /** \brief The largest block that reuseFreedMemory() has glibc's malloc take from its
  * heap: 32 MiB, the most glibc accepts on 64-bit systems. */

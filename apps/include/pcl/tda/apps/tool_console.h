@@ -8,9 +8,8 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
 
-#include <cstdint>
+#include <cstddef>
 #include <cstdio>
-#include <optional>
 #include <string>
 
 namespace pcl {
@@ -103,10 +102,8 @@ private:
 
 /** \brief The main() of a tool: "-h" or "--help" prints the help only and exits
  * with 0, fewer than \a least_arguments arguments print it and exit with 1; else
- * starts the tool again with huge pages for malloc (restartWithHugePageMalloc()),
- * unless its first argument is a PCD file of fewer than HUGE_PAGE_MALLOC_MIN_POINTS
- * points, where the restart would cost more than it saves; has malloc reuse the memory
- * the tool frees (reuseFreedMemory()); prints \a intro, reads the
+ * has malloc reuse the memory the tool frees (reuseFreedMemory()) and back its heap
+ * with huge pages (backHeapWithHugePages()); prints \a intro, reads the
  * options with \a parse and returns the exit code of \a run. A refusal (a
  * pcl::PCLException thrown by either) prints its message and exits with 1. */
 template <typename Options>
@@ -132,10 +129,8 @@ runTool (int argc,
     print_help (argv[0]);
     return 1;
   }
-  const std::optional<std::uint64_t> input_points = pcdPointCount (argv[1]);
-  if (!input_points || *input_points >= HUGE_PAGE_MALLOC_MIN_POINTS)
-    restartWithHugePageMalloc (argv);
   reuseFreedMemory();
+  backHeapWithHugePages();
   print_intro();
   ToolConsole console;
   try {
