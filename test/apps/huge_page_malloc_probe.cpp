@@ -1,6 +1,6 @@
 // A program for test_huge_page_malloc: prepares malloc as the tools do
 // (reuseFreedMemory(), backHeapWithHugePages()), writes a new block of 24 MiB, and
-// prints whether the heap was advised and the page faults of the write.
+// prints whether the heap was advised and the page faults of that write.
 
 #include <pcl/tda/apps/huge_page_malloc.h>
 
@@ -22,7 +22,8 @@ pageFaults ()
   return usage.ru_minflt;
 }
 
-/** The block, through a volatile pointer, so that the compiler keeps the writes. */
+/** The blocks, through volatile pointers, so that the compiler keeps the writes. */
+void* volatile first_block = nullptr;
 void* volatile block = nullptr;
 
 } // namespace
@@ -32,12 +33,17 @@ main ()
 {
   pcl::tda::reuseFreedMemory();
   const bool advised = pcl::tda::backHeapWithHugePages();
+  // The heap's first 2 MiB boundary may lie up to 2 MiB into the advised part: its
+  // 4 KiB pages before it go to a first block.
+  constexpr std::size_t HUGE_PAGE = std::size_t{2} << 20;
+  first_block = std::malloc (HUGE_PAGE);
   constexpr std::size_t BYTES = std::size_t{24} << 20;
   const long before = pageFaults();
   block = std::malloc (BYTES);
   std::memset (block, 1, BYTES);
   const long faults = pageFaults() - before;
   std::free (block);
+  std::free (first_block);
   std::printf ("advised %d\nfaults %ld\n", advised ? 1 : 0, faults);
   return 0;
 }
