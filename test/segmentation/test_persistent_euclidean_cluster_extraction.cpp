@@ -628,36 +628,50 @@ TEST (PersistentEuclideanClusterExtraction, AutoDistanceRecoversObjectCount)
 TEST (PersistentEuclideanClusterExtraction,
       AutoDistanceTakesASmallPieceForPartOfItsObject)
 {
-  // Points 1 apart on a line: object A of 200 points, 3 beyond it a piece of 30
-  // points, 30 beyond that object B of 200 points. The would-be clusters appear at 1;
-  // the piece merges into A at 3 and A into B at 30.
+  // Points 1 apart on a line: object A of 200 points, 20 beyond it a piece of 30
+  // points, 60 beyond that object B of 200 points. The would-be clusters appear at 1;
+  // the piece merges into A at 20 and A into B at 60.
   Cloud::Ptr line (new Cloud);
   const auto add_run = [&line] (float start, int points) {
     for (int i = 0; i < points; ++i)
       line->push_back ({start + static_cast<float> (i), 0.0f, 0.0f});
   };
   add_run (0.0f, 200);   // A: 0 to 199
-  add_run (202.0f, 30);  // the piece: 202 to 231
-  add_run (261.0f, 200); // B: 261 to 460
+  add_run (219.0f, 30);  // the piece: 219 to 248
+  add_run (308.0f, 200); // B: 308 to 507
   for (const double piece_ratio : {Extraction::DEFAULT_PIECE_RATIO, 0.0}) {
     Extraction extraction;
     extraction.setAutoMaxDistance (true);
     extraction.setAutoPieceRatio (piece_ratio);
     const auto clusters = ourClusters (line, 100.0, 20, 1000000, &extraction);
     if (piece_ratio > 0.0) {
-      // 30 < 0.2 x 230: a piece of A; 2 clusters on [1, 30), at sqrt(30).
-      EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (30.0), 1e-9);
+      // 30 < 0.2 x 230: a piece of A; 2 clusters on [1, 60). The piece joins A at
+      // 20, within the step: the distance is in the rest of it, at sqrt(20 x 60),
+      // not at sqrt(60), where the piece would stand apart.
+      EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (20.0 * 60.0), 1e-9);
       ASSERT_EQ (clusters.size(), 2u);
-      EXPECT_EQ (clusters[0].indices.size() + clusters[1].indices.size(), 430u);
-      EXPECT_EQ (std::min (clusters[0].indices.size(), clusters[1].indices.size()),
-                 200u);
+      EXPECT_EQ (clusters[0].indices.size(), 230u);
+      EXPECT_EQ (clusters[1].indices.size(), 200u);
     }
     else {
-      // Counted: 3 clusters on [1, 3), stable over a factor of 3, at sqrt(3).
-      EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (3.0), 1e-9);
+      // Counted: 3 clusters on [1, 20), stable over a factor of 20, at sqrt(20).
+      EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (20.0), 1e-9);
       EXPECT_EQ (clusters.size(), 3u);
     }
   }
+
+  // The piece 50 beyond A: apart over [1, 50) of the step [1, 60); the rest spans a
+  // factor of 1.2, less than the gap ratio 1.5: the middle of the whole step, where
+  // the piece stands apart.
+  line->clear();
+  add_run (0.0f, 200);
+  add_run (249.0f, 30);
+  add_run (338.0f, 200);
+  Extraction extraction;
+  extraction.setAutoMaxDistance (true);
+  const auto clusters = ourClusters (line, 100.0, 20, 1000000, &extraction);
+  EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (60.0), 1e-9);
+  EXPECT_EQ (clusters.size(), 3u);
 }
 
 TEST (PersistentEuclideanClusterExtraction, AutoDistanceF1OnOurGenerator)
