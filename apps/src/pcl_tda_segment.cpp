@@ -34,6 +34,8 @@ struct Options {
   long min_size = 1;
   long max_size = std::numeric_limits<int>::max();
   bool automatic = false;
+  double piece_ratio = pcl::tda::PersistentEuclideanClusterExtraction<
+      pcl::PointXYZ>::DEFAULT_PIECE_RATIO;
   double memory_mib = 0.0;
   bool png = false;
 };
@@ -49,6 +51,12 @@ printHelp (const char* program)
   print_info ("    -radius R   = largest distance within a cluster, the filtration's "
               "end (required, > 0)\n");
   print_info ("    -auto       = choose the distance from the H0 diagram, up to R\n");
+  print_info (
+      "    -piece P    = with -auto: a would-be cluster that joins one more than "
+      "1/P times its\n                  size is a piece of it (default %g; 0 = "
+      "none, where small objects\n                  stand next to big ones; "
+      "< 1)\n",
+      Options{}.piece_ratio);
   print_info ("    -min N      = smallest cluster, in points (default 1)\n");
   print_info ("    -max N      = largest cluster, in points (default: no limit; larger "
               "ones are dropped)\n");
@@ -77,6 +85,8 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addNumber (
       "-radius", options.radius, pcl::tda::NumberRange::above (0.0), true);
   command_line.addSwitch ("-auto", options.automatic);
+  command_line.addNumber (
+      "-piece", options.piece_ratio, pcl::tda::NumberRange::atLeastBelow (0.0, 1.0));
   command_line.addInteger ("-min", options.min_size, 1, max_int);
   command_line.addInteger ("-max", options.max_size, 1, max_int);
   command_line.addNumber (
@@ -102,6 +112,8 @@ parseOptions (int argc, char** argv, Options& options)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "Need 1 <= -min <= -max, not " << options.min_size << " and "
                                                         << options.max_size << ".");
+  if (command_line.given ("-piece") && !options.automatic)
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException, "-piece has no use without -auto.");
   if (options.png && options.barcode_svg.empty())
     PCL_THROW_EXCEPTION (pcl::BadArgumentException, "-png has no use without -svg.");
 }
@@ -145,6 +157,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   extraction.setMinClusterSize (options.min_size);
   extraction.setMaxClusterSize (options.max_size);
   extraction.setAutoMaxDistance (options.automatic);
+  extraction.setAutoPieceRatio (options.piece_ratio);
   // The automatic distance never goes below the voxel grid's spacing.
   extraction.setAutoMinDistance (options.preprocessing.leaf);
   if (options.memory_mib > 0.0)

@@ -19,7 +19,7 @@ describe (const NumberRange& range)
   std::ostringstream text;
   text << "a number " << (range.above_minimum ? "> " : ">= ") << range.minimum;
   if (range.maximum < std::numeric_limits<double>::max())
-    text << " and <= " << range.maximum;
+    text << (range.below_maximum ? " and < " : " and <= ") << range.maximum;
   return text.str();
 }
 
@@ -116,7 +116,8 @@ ToolCommandLine::store (const std::string& name,
     const std::optional<double> value = parseWholeNumber (text);
     const NumberRange& range = option.range;
     if (!value || *value < range.minimum ||
-        (range.above_minimum && *value == range.minimum) || *value > range.maximum)
+        (range.above_minimum && *value == range.minimum) || *value > range.maximum ||
+        (range.below_maximum && *value == range.maximum))
       refuseValue (name, describe (range), text);
     **number = *value;
   }

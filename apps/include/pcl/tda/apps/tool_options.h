@@ -12,24 +12,33 @@ namespace pcl {
 namespace tda {
 
 /** \brief The values a number option accepts: finite numbers from \a minimum
- * (excluded when \a above_minimum) up to \a maximum. */
+ * (excluded when \a above_minimum) up to \a maximum (excluded when
+ * \a below_maximum). */
 struct NumberRange {
   double minimum = 0.0;
   bool above_minimum = false;
   double maximum = std::numeric_limits<double>::max();
+  bool below_maximum = false;
 
   /** \brief Numbers > \a minimum, up to \a maximum. */
   static NumberRange
   above (double minimum, double maximum = std::numeric_limits<double>::max())
   {
-    return {minimum, true, maximum};
+    return {minimum, true, maximum, false};
   }
 
   /** \brief Numbers >= \a minimum, up to \a maximum. */
   static NumberRange
   atLeast (double minimum, double maximum = std::numeric_limits<double>::max())
   {
-    return {minimum, false, maximum};
+    return {minimum, false, maximum, false};
+  }
+
+  /** \brief Numbers >= \a minimum and < \a maximum. */
+  static NumberRange
+  atLeastBelow (double minimum, double maximum)
+  {
+    return {minimum, false, maximum, true};
   }
 };
 
