@@ -26,42 +26,6 @@ quantile (std::vector<double>& values, double q)
   return values[rank];
 }
 
-/** The longest part (in log) of the step [\a low, \a high) over which no piece
- * stands apart from its object (each of \a pieces_apart is the [from, to) over which
- * one did), if it spans a factor of at least \a gap_ratio; else the whole step. */
-std::pair<double, double>
-partWithoutPiecesApart (double low,
-                        double high,
-                        const std::vector<std::pair<double, double>>& pieces_apart,
-                        double gap_ratio)
-{
-  std::vector<std::pair<double, double>> overlapping;
-  std::vector<double> cuts{low, high};
-  for (const auto& [from, to] : pieces_apart)
-    if (from < high && to > low) {
-      overlapping.emplace_back (from, to);
-      for (const double cut : {from, to})
-        if (cut > low && cut < high)
-          cuts.push_back (cut);
-    }
-  std::sort (cuts.begin(), cuts.end());
-  std::pair<double, double> best{low, high};
-  double best_span = 0.0;
-  for (std::size_t i = 0; i + 1 < cuts.size(); ++i) {
-    const double middle = std::sqrt (cuts[i] * cuts[i + 1]);
-    const bool piece_apart = std::any_of (
-        overlapping.begin(), overlapping.end(), [middle] (const auto& apart) {
-          return apart.first <= middle && middle < apart.second;
-        });
-    const double span = std::log (cuts[i + 1] / cuts[i]);
-    if (!piece_apart && span >= std::log (gap_ratio) && span > best_span) {
-      best = {cuts[i], cuts[i + 1]};
-      best_span = span;
-    }
-  }
-  return best;
-}
-
 } // namespace
 
 ClusterDistanceChoice
@@ -82,15 +46,15 @@ chooseClusterDistance (const FilteredComplex& complex,
   // significant components subtracts 1; but when the smaller of the two has fewer
   // than piece_ratio times the points of the larger, it was a piece of the larger:
   // it is taken off the count from the scale it counted from (its +1 cancelled)
-  // instead, and the scales over which it stood apart are kept. A merged component
-  // counts from the earlier of its parts' scales.
+  // instead, and the scale at which it joined is kept. A merged component counts
+  // from the earlier of its parts' scales.
   const std::size_t significant_size = std::max<std::size_t> (min_cluster_size, 2);
   const std::size_t num_vertices = complex.numVertices();
   UnionFind components (num_vertices);
   std::vector<bool> significant (num_vertices, false);
   std::vector<double> counted_from (num_vertices, 0.0);
-  std::vector<std::pair<double, int>> events;          // (scale, +1 or -1)
-  std::vector<std::pair<double, double>> pieces_apart; // [counted from, joined)
+  std::vector<std::pair<double, int>> events; // (scale, +1 or -1)
+  std::vector<double> piece_joins;
   std::vector<double> nearest (num_vertices, std::numeric_limits<double>::infinity());
   for (const SimplexIndex e : h0.negativeEdges()) {
     const FilteredEdge& edge = complex.edges()[e];
@@ -108,7 +72,7 @@ chooseClusterDistance (const FilteredComplex& complex,
       const double larger = static_cast<double> (a_smaller ? size_b : size_a);
       if (smaller < piece_ratio * larger) {
         events.emplace_back (a_smaller ? from_a : from_b, -1);
-        pieces_apart.emplace_back (a_smaller ? from_a : from_b, edge.value);
+        piece_joins.push_back (edge.value);
       }
       else
         events.emplace_back (edge.value, -1);
@@ -149,11 +113,13 @@ chooseClusterDistance (const FilteredComplex& complex,
   choice.low = chosen.low;
   choice.high = chosen.high;
   choice.num_clusters = chosen.count;
-  // The distance: in the middle of the longest part of the step in which every
-  // piece is with its object (the count has none apart), if that part is stable too.
-  const auto [low, high] =
-      partWithoutPiecesApart (choice.low, choice.high, pieces_apart, gap_ratio);
-  choice.distance = std::sqrt (low * high);
+  // The count has no piece apart: the distance is past the last piece that joins
+  // its object within the step (the join's edge is then in), in the middle of the rest.
+  double pieces_joined = choice.low;
+  for (const double join : piece_joins)
+    if (join < choice.high)
+      pieces_joined = std::max (pieces_joined, join);
+  choice.distance = std::sqrt (pieces_joined * choice.high);
   choice.clear = chosen.clear;
   return choice;
 }

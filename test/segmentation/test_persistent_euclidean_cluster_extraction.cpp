@@ -613,7 +613,10 @@ TEST (PersistentEuclideanClusterExtraction, AutoDistanceRecoversObjectCount)
   // noise of 5 mm and more, the sparse table remnants that RANSAC leaves become
   // components of the minimum size at 2-4 cm and bridge the objects; in 29 of these
   // scenes no split into objects lasts a factor of the gap ratio, and the rule takes
-  // one cluster (or keeps a remnant clump as a cluster).
+  // one cluster (or keeps a remnant clump as a cluster). In 5 more (noise 5-6 mm)
+  // the distance taken past the pieces that join within the step (which gains on
+  // the independent scenes, doc/persistent_euclidean_cluster_extraction.md) keeps
+  // one more small cluster than there are objects.
   std::size_t recovered = 0, total = 0;
   for (const auto& [first_seed, min_gap] : {std::make_pair (std::uint64_t{11}, 0.05f),
                                             std::make_pair (std::uint64_t{101}, 0.04f)})
@@ -622,7 +625,7 @@ TEST (PersistentEuclideanClusterExtraction, AutoDistanceRecoversObjectCount)
       ++total;
     }
   EXPECT_EQ (total, 240u);
-  EXPECT_GE (recovered, 211u);
+  EXPECT_GE (recovered, 206u);
 }
 
 TEST (PersistentEuclideanClusterExtraction,
@@ -660,9 +663,8 @@ TEST (PersistentEuclideanClusterExtraction,
     }
   }
 
-  // The piece 50 beyond A: apart over [1, 50) of the step [1, 60); the rest spans a
-  // factor of 1.2, less than the gap ratio 1.5: the middle of the whole step, where
-  // the piece stands apart.
+  // The piece 50 beyond A joins it late in the step [1, 60): still past its join,
+  // at sqrt(50 x 60).
   line->clear();
   add_run (0.0f, 200);
   add_run (249.0f, 30);
@@ -670,8 +672,8 @@ TEST (PersistentEuclideanClusterExtraction,
   Extraction extraction;
   extraction.setAutoMaxDistance (true);
   const auto clusters = ourClusters (line, 100.0, 20, 1000000, &extraction);
-  EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (60.0), 1e-9);
-  EXPECT_EQ (clusters.size(), 3u);
+  EXPECT_NEAR (extraction.getChosenDistance(), std::sqrt (50.0 * 60.0), 1e-9);
+  EXPECT_EQ (clusters.size(), 2u);
 }
 
 TEST (PersistentEuclideanClusterExtraction, AutoDistanceF1OnOurGenerator)

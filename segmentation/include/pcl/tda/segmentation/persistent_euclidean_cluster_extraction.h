@@ -24,8 +24,8 @@ struct ClusterDistanceChoice {
    * (0 when no positive distance exists). */
   double sampling_scale = 0.0;
   /** \brief The chosen step [low, high) of the count of significant components
-   * (see the rule); distance is the geometric middle of it or of its longest part
-   * without pieces apart. Both 0 when there is none. */
+   * (see the rule); distance is the geometric middle of its part after the pieces
+   * that join their objects within it. Both 0 when there is none. */
   double low = 0.0;
   double high = 0.0;
   /** \brief The number of significant components in that interval. */
@@ -267,11 +267,10 @@ public:
    *    that is stable (objects standing close together merge at the later steps,
    *    which may well be much longer). When no split spans q, the longest step with
    *    one cluster (all points one object) is taken, if any.
-   * 4. The distance is the geometric middle sqrt(a b) of the longest part [a, b) of
-   *    that step over which no piece stands apart (a piece stands apart from the
-   *    scale at which it became significant until it joins its object), if that
-   *    part spans a factor of at least q, else of the whole step: the pieces are not
-   *    counted, so they should be with their objects in the clusters too. The choice
+   * 4. The distance is the geometric middle sqrt(j high) of the part of that step
+   *    after the last piece that joins its object within it (j that join's scale;
+   *    low when none does): the pieces are not counted, so they should be with their
+   *    objects in the clusters too. The choice
    *    is clear when the step spans a factor of at least q and is at least q times
    *    as long (in log) as every other step with two clusters or more; otherwise
    *    extract() prints a PCL_WARN and getAutoDistanceIsClear() is false.
