@@ -22,13 +22,15 @@ constexpr int DEFAULT_TOP_PAD = 128 << 10;
 /** The block backHeapWithHugePages() asks for to have the heap grow. */
 constexpr std::size_t GROWTH_BLOCK = std::size_t{1} << 20;
 
-/** Whether GLIBC_TUNABLES names \a tunable: the user's choice. */
+/** Whether the user chose a malloc setting: \a tunable in GLIBC_TUNABLES, or its
+ * older environment variable \a variable (MALLOC_*_, where glibc has one). */
 bool
-tunableChosen (const char* tunable)
+userChose (const char* tunable, const char* variable = nullptr)
 {
   const char* tunables = std::getenv ("GLIBC_TUNABLES");
-  return tunables != nullptr &&
-         std::string (tunables).find (tunable) != std::string::npos;
+  return (tunables != nullptr &&
+          std::string (tunables).find (tunable) != std::string::npos) ||
+         (variable != nullptr && std::getenv (variable) != nullptr);
 }
 
 /** Whether the process has a limit on its address space or its data size. */
@@ -56,8 +58,8 @@ transparentHugePagesAvailable ()
 bool
 backHeapWithHugePages (std::size_t bytes)
 {
-  if (bytes > INT_MAX || tunableChosen ("glibc.malloc.hugetlb") ||
-      tunableChosen ("glibc.malloc.top_pad") || std::getenv ("MALLOC_TOP_PAD_") ||
+  if (bytes > INT_MAX || userChose ("glibc.malloc.hugetlb") ||
+      userChose ("glibc.malloc.top_pad", "MALLOC_TOP_PAD_") ||
       !transparentHugePagesAvailable() || memoryLimited())
     return false;
   // The heap grows by the block and the padding at once, in address space only.
@@ -83,12 +85,9 @@ backHeapWithHugePages (std::size_t bytes)
 void
 reuseFreedMemory ()
 {
-  // MALLOC_*_THRESHOLD_: glibc's older names of the same settings.
-  if (!tunableChosen ("glibc.malloc.mmap_threshold") &&
-      !std::getenv ("MALLOC_MMAP_THRESHOLD_"))
+  if (!userChose ("glibc.malloc.mmap_threshold", "MALLOC_MMAP_THRESHOLD_"))
     mallopt (M_MMAP_THRESHOLD, static_cast<int> (HEAP_BLOCK_LIMIT));
-  if (!tunableChosen ("glibc.malloc.trim_threshold") &&
-      !std::getenv ("MALLOC_TRIM_THRESHOLD_"))
+  if (!userChose ("glibc.malloc.trim_threshold", "MALLOC_TRIM_THRESHOLD_"))
     mallopt (M_TRIM_THRESHOLD, INT_MAX);
 }
 
