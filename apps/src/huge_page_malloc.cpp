@@ -22,6 +22,9 @@ constexpr int DEFAULT_TOP_PAD = 128 << 10;
 /** The block backHeapWithHugePages() asks for to have the heap grow. */
 constexpr std::size_t GROWTH_BLOCK = std::size_t{1} << 20;
 
+/** The size of a transparent huge page, and the alignment the kernel needs for one. */
+constexpr std::uintptr_t HUGE_PAGE_BYTES = std::uintptr_t{2} << 20;
+
 /** Whether the user chose a malloc setting: \a tunable in GLIBC_TUNABLES, or its
  * older environment variable \a variable (MALLOC_*_, where glibc has one). */
 bool
@@ -43,6 +46,33 @@ memoryLimited ()
       return true;
   }
   return false;
+}
+
+/** The part of the heap below the first huge page that the tools' blocks can take,
+ * kept by keepHeapBelowHugePages(); never written, it costs address space only. */
+void* heap_below_huge_pages = nullptr;
+
+/** Has \a block, the block of \a bytes at the top of the heap, reach the huge page
+ * boundary after it and keeps it, so that the blocks malloc takes from the heap next
+ * start at that boundary. Else the first of them would lie on the part of the heap
+ * that the kernel backs with 4 KiB pages: before the heap's first boundary (the heap
+ * rarely starts at one), and the 2 MiB around the end of \a block, where malloc wrote
+ * the header of the rest of the heap before the advice (a 4 KiB page there, so no
+ * huge page): up to 4 MiB that a tool would write first, a page fault per 4 KiB.
+ * Frees \a block where it could not grow in place. */
+void
+keepHeapBelowHugePages (char* block, std::size_t bytes)
+{
+  // malloc's header of the rest of the heap: 16 bytes after the block.
+  constexpr std::size_t HEADER_BYTES = 16;
+  const auto address = reinterpret_cast<std::uintptr_t> (block);
+  const std::uintptr_t boundary =
+      (address + bytes + HEADER_BYTES + HUGE_PAGE_BYTES - 1) & ~(HUGE_PAGE_BYTES - 1);
+  void* const kept = std::realloc (block, boundary - address);
+  if (kept == block)
+    heap_below_huge_pages = kept;
+  else
+    std::free (kept != nullptr ? kept : block);
 }
 
 } // namespace
@@ -78,7 +108,10 @@ backHeapWithHugePages (std::size_t bytes)
       static_cast<std::size_t> (heap_end - begin) <= bytes + GROWTH_BLOCK + page;
   const bool advised =
       on_grown_heap && madvise (begin, heap_end - begin, MADV_HUGEPAGE) == 0;
-  std::free (block);
+  if (advised)
+    keepHeapBelowHugePages (block, GROWTH_BLOCK);
+  else
+    std::free (block);
   return advised;
 }
 

@@ -6,59 +6,49 @@
 
 #include <gtest/gtest.h>
 
+#include "new_block_faults.h"
 #include "tool_runner.h"
-#include <sys/resource.h>
 
 #include <cstddef>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <string>
-#include <utility>
 
+using pcl::tda::test::faultsOfNewBlock;
 using pcl::tda::test::run;
 
 namespace {
 
 const std::string PROBE = std::string (PCL_TDA_BIN_DIR) + "/huge_page_malloc_probe";
 
-/** The 4 KiB pages of the probe's block. */
+/** The 4 KiB pages of the probe's first block and of its second. */
+constexpr long FIRST_PROBE_PAGES = (1 << 20) / 4096;
 constexpr long PROBE_PAGES = (24 << 20) / 4096;
 
-/** Whether the probe's heap was advised, and the page faults of its write of 24 MiB,
- * run by sh with \a setup (e.g. "GLIBC_TUNABLES=x", "ulimit -v 8000000;") before it. */
-std::pair<int, long>
+/** What the probe printed. */
+struct ProbeResult {
+  int advised = -1;
+  long first_faults = -1;
+  long faults = -1;
+};
+
+/** Whether the probe's heap was advised, and the page faults of its writes of 1 MiB
+ * and of 24 MiB, run by sh with \a setup (e.g. "GLIBC_TUNABLES=x",
+ * "ulimit -v 8000000;") before it. */
+ProbeResult
 probe (const std::string& setup)
 {
-  const auto result =
+  const auto output =
       run ("unset GLIBC_TUNABLES MALLOC_TOP_PAD_; " + setup + " " + PROBE);
-  EXPECT_EQ (result.exit_code, 0) << result.output;
-  int advised = -1;
-  long faults = -1;
-  EXPECT_EQ (
-      std::sscanf (result.output.c_str(), "advised %d\nfaults %ld", &advised, &faults),
-      2)
-      << result.output;
-  return {advised, faults};
-}
-
-/** The block of faultsOfNewBlock(): through a volatile pointer, so that the compiler
- * keeps the writes to it. */
-void* volatile block = nullptr;
-
-/** The page faults of this process while it writes a new block of \a bytes, which it
- * frees after. */
-long
-faultsOfNewBlock (std::size_t bytes)
-{
-  rusage usage;
-  getrusage (RUSAGE_SELF, &usage);
-  const long before = usage.ru_minflt;
-  block = std::malloc (bytes);
-  std::memset (block, 1, bytes);
-  std::free (block);
-  getrusage (RUSAGE_SELF, &usage);
-  return usage.ru_minflt - before;
+  EXPECT_EQ (output.exit_code, 0) << output.output;
+  ProbeResult result;
+  EXPECT_EQ (std::sscanf (output.output.c_str(),
+                          "advised %d\nfirst faults %ld\nfaults %ld",
+                          &result.advised,
+                          &result.first_faults,
+                          &result.faults),
+             3)
+      << output.output;
+  return result;
 }
 
 } // namespace
@@ -70,11 +60,14 @@ TEST (HugePageHeap, NewBlocksAreWrittenInHugePages)
 #endif
   if (!pcl::tda::transparentHugePagesAvailable())
     GTEST_SKIP() << "transparent huge pages are off here";
-  const auto [advised, faults] = probe ("");
-  EXPECT_EQ (advised, 1);
+  const ProbeResult result = probe ("");
+  EXPECT_EQ (result.advised, 1);
+  // The first block lies on the heap's first huge page, not on the 4 KiB pages before
+  // it: 0 faults (median and most) in 100 runs, against 255 before the heap kept it.
+  EXPECT_LE (result.first_faults, FIRST_PROBE_PAGES / 8);
   // 12 huge pages: 12 faults (median; at most 267) in 100 runs on a busy machine,
   // against 6,144 in 4 KiB pages.
-  EXPECT_LE (faults, PROBE_PAGES / 8);
+  EXPECT_LE (result.faults, PROBE_PAGES / 8);
 }
 
 TEST (HugePageHeap, KeepsTheUsersChoiceAndLimits)
@@ -88,9 +81,9 @@ TEST (HugePageHeap, KeepsTheUsersChoiceAndLimits)
                                   "MALLOC_TOP_PAD_=4096",
                                   "ulimit -v 8000000;",
                                   "ulimit -d 8000000;"}) {
-    const auto [advised, faults] = probe (setup);
-    EXPECT_EQ (advised, 0) << setup;
-    EXPECT_GT (faults, 0) << setup;
+    const ProbeResult result = probe (setup);
+    EXPECT_EQ (result.advised, 0) << setup;
+    EXPECT_GT (result.faults, 0) << setup;
   }
 }
 
