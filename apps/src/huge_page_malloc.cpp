@@ -48,8 +48,8 @@ memoryLimited ()
   return false;
 }
 
-/** The part of the heap below the first huge page that the tools' blocks can take,
- * kept by keepHeapBelowHugePages(); never written, it costs address space only. */
+/** The block that keeps the heap up to its first usable huge page out of malloc's
+ * reach (keepHeapBelowHugePages()); never written, it costs address space only. */
 void* heap_below_huge_pages = nullptr;
 
 /** Has \a block, the block of \a bytes at the top of the heap, reach the huge page

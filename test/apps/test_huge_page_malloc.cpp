@@ -63,10 +63,10 @@ TEST (HugePageHeap, NewBlocksAreWrittenInHugePages)
   const ProbeResult result = probe ("");
   EXPECT_EQ (result.advised, 1);
   // The first block lies on the heap's first huge page, not on the 4 KiB pages before
-  // it: 0 faults (median and most) in 100 runs, against 255 before the heap kept it.
+  // it: 0 faults in each of 100 runs, against 255 before the heap kept that part.
   EXPECT_LE (result.first_faults, FIRST_PROBE_PAGES / 8);
-  // 12 huge pages: 12 faults (median; at most 267) in 100 runs on a busy machine,
-  // against 6,144 in 4 KiB pages.
+  // 12 huge pages: 12 faults in each of 100 runs (median 12, at most 267, before the
+  // heap kept its first part), against 6,144 in 4 KiB pages.
   EXPECT_LE (result.faults, PROBE_PAGES / 8);
 }
 
