@@ -3,11 +3,73 @@
 #include <pcl/exceptions.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 namespace pcl {
 namespace tda {
+
+namespace {
+
+using CellKey = std::array<std::int64_t, 3>;
+
+/** Cells per block of the pass that finds every cell's neighbour runs. */
+constexpr std::int64_t CELLS_PER_BLOCK = 4096;
+
+/** The rows (x + dx, y + dy) of the later neighbour cells of a cell (x, y, z) that
+ * lie outside its own row. */
+constexpr std::array<std::array<std::int64_t, 2>, 4> NEIGHBOR_ROWS{
+    {{0, 1}, {1, -1}, {1, 0}, {1, 1}}};
+
+/** The first key of neighbour row \a row of cell \a key: (x + dx, y + dy, z - 1). */
+CellKey
+rowStart (const CellKey& key, std::size_t row)
+{
+  return {key[0] + NEIGHBOR_ROWS[row][0], key[1] + NEIGHBOR_ROWS[row][1], key[2] - 1};
+}
+
+/** The last key of neighbour row \a row of cell \a key: (x + dx, y + dy, z + 1). */
+CellKey
+rowEnd (const CellKey& key, std::size_t row)
+{
+  return {key[0] + NEIGHBOR_ROWS[row][0], key[1] + NEIGHBOR_ROWS[row][1], key[2] + 1};
+}
+
+/** The cells with keys in a range [low, high], for ranges that only move forward: a
+ * cursor over sorted keys. */
+class KeyRangeCursor {
+public:
+  KeyRangeCursor() = default;
+
+  /** Starts at the first of \a keys not below \a low. */
+  KeyRangeCursor (const std::vector<CellKey>& keys, const CellKey& low)
+  : keys_ (&keys)
+  , begin_ (std::lower_bound (keys.begin(), keys.end(), low) - keys.begin())
+  , end_ (begin_)
+  {}
+
+  /** The positions [begin, end) of the keys in [\a low, \a high], for \a low and
+   * \a high not below those of the call before. */
+  std::pair<std::size_t, std::size_t>
+  advance (const CellKey& low, const CellKey& high)
+  {
+    const std::vector<CellKey>& keys = *keys_;
+    while (begin_ < keys.size() && keys[begin_] < low)
+      ++begin_;
+    end_ = std::max (end_, begin_);
+    while (end_ < keys.size() && !(high < keys[end_]))
+      ++end_;
+    return {begin_, end_};
+  }
+
+private:
+  const std::vector<CellKey>* keys_ = nullptr;
+  std::size_t begin_ = 0;
+  std::size_t end_ = 0;
+};
+
+} // namespace
 
 UniformGrid::UniformGrid (const std::vector<Point3d>& points,
                           double cell_size,
@@ -53,23 +115,31 @@ UniformGrid::UniformGrid (const std::vector<Point3d>& points,
   }
   cell_begin_.push_back (static_cast<std::uint32_t> (points.size()));
 
-  // The positions of the cells with keys in [first, last], as a run of point_ids_.
-  const auto run = [&] (const CellKey& first, const CellKey& last) {
-    const auto begin = std::lower_bound (cell_keys.begin(), cell_keys.end(), first);
-    const auto end = std::upper_bound (begin, cell_keys.end(), last);
-    return std::make_pair (cell_begin_[begin - cell_keys.begin()],
-                           cell_begin_[end - cell_keys.begin()]);
-  };
+  // Cells are in the order of their keys, and so are the rows of cells that a fixed
+  // offset takes them to: a cursor per neighbour row only moves forward, over a block
+  // of cells after a binary search at the block's first cell.
   runs_.resize (cell_keys.size());
   const auto num_cells = static_cast<std::int64_t> (cell_keys.size());
+  const std::int64_t num_blocks = (num_cells + CELLS_PER_BLOCK - 1) / CELLS_PER_BLOCK;
 #pragma omp parallel for schedule(static) num_threads(resolveThreads(threads))
-  for (std::int64_t c = 0; c < num_cells; ++c) {
-    const auto [x, y, z] = cell_keys[c];
-    // Cell (x, y, z + 1), when there is one, is the next cell: its run ends the first.
-    runs_[c][0] = {cell_begin_[c], run ({x, y, z + 1}, {x, y, z + 1}).second};
-    runs_[c][1] = run ({x, y + 1, z - 1}, {x, y + 1, z + 1});
-    for (std::int64_t dy = -1; dy <= 1; ++dy)
-      runs_[c][dy + 3] = run ({x + 1, y + dy, z - 1}, {x + 1, y + dy, z + 1});
+  for (std::int64_t block = 0; block < num_blocks; ++block) {
+    const std::int64_t first = block * CELLS_PER_BLOCK;
+    const std::int64_t last = std::min (num_cells, first + CELLS_PER_BLOCK);
+    std::array<KeyRangeCursor, NEIGHBOR_ROWS.size()> rows;
+    for (std::size_t row = 0; row < rows.size(); ++row)
+      rows[row] = KeyRangeCursor (cell_keys, rowStart (cell_keys[first], row));
+    for (std::int64_t c = first; c < last; ++c) {
+      // Cell (x, y, z + 1), when there is one, is the next: the first run ends with it.
+      const auto [x, y, z] = cell_keys[c];
+      const bool next_above =
+          c + 1 < num_cells && cell_keys[c + 1] == CellKey{x, y, z + 1};
+      runs_[c][0] = {cell_begin_[c], cell_begin_[c + 1 + (next_above ? 1 : 0)]};
+      for (std::size_t row = 0; row < rows.size(); ++row) {
+        const auto [begin, end] = rows[row].advance (rowStart (cell_keys[c], row),
+                                                     rowEnd (cell_keys[c], row));
+        runs_[c][row + 1] = {cell_begin_[begin], cell_begin_[end]};
+      }
+    }
   }
 }
 

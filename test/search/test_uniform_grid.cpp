@@ -44,14 +44,17 @@ TEST (UniformGrid, RadiusEdgesEqualBruteForce)
   }
 }
 
-// The cells and candidate pairs are those of the half stencil: every pair of
-// points in neighbouring cells is a candidate exactly once.
-TEST (UniformGrid, CandidatePairsCoverNeighbouringCellsOnce)
+namespace {
+
+/** The cells and candidate pairs of a grid over \a points with cells of \a cell,
+ * built on \a threads threads, are those of the half stencil: every pair of points in
+ * neighbouring cells is a candidate exactly once. Returns the grid's cell count. */
+std::size_t
+expectHalfStencil (const std::vector<Point3d>& points,
+                   double cell,
+                   unsigned int threads)
 {
-  std::mt19937 random (3);
-  const double cell = 0.2;
-  const std::vector<Point3d> points = randomPoints (random, 400, cell);
-  const UniformGrid grid (points, cell);
+  const UniformGrid grid (points, cell, threads);
   std::vector<std::uint64_t> seen;
   std::size_t points_in_cells = 0;
   for (std::size_t c = 0; c < grid.numCells(); ++c) {
@@ -68,7 +71,29 @@ TEST (UniformGrid, CandidatePairsCoverNeighbouringCellsOnce)
   // Every pair within the cell size is a candidate.
   for (const auto& edge : bruteForceEdges (points, cell, false))
     EXPECT_TRUE (std::binary_search (
-        seen.begin(), seen.end(), (std::uint64_t{edge.source} << 32) | edge.target));
+        seen.begin(), seen.end(), (std::uint64_t{edge.source} << 32) | edge.target))
+        << edge.source << " " << edge.target << ", threads " << threads;
+  return grid.numCells();
+}
+
+} // namespace
+
+TEST (UniformGrid, CandidatePairsCoverNeighbouringCellsOnce)
+{
+  std::mt19937 random (3);
+  const double cell = 0.2;
+  expectHalfStencil (randomPoints (random, 400, cell), cell, 1);
+}
+
+// The grid finds the neighbour cells of blocks of 4,096 cells at a time, each block
+// from its own start: several blocks, on 1 and 2 threads.
+TEST (UniformGrid, CandidatePairsCoverNeighbouringCellsOnceOverManyCells)
+{
+  std::mt19937 random (5);
+  const double cell = 0.02;
+  const std::vector<Point3d> points = randomPoints (random, 20000, cell);
+  for (const unsigned int threads : {1u, 2u})
+    EXPECT_GT (expectHalfStencil (points, cell, threads), 2u * 4096u);
 }
 
 TEST (UniformGrid, RefusesBadCellSizes)
