@@ -17,8 +17,8 @@ main ()
 {
   pcl::tda::reuseFreedMemory();
   const bool advised = pcl::tda::backHeapWithHugePages();
-  // The first block is where the heap's first huge page boundary would lie if the
-  // tools' part of the heap began before it.
+  // Unless the heap keeps its part before the first usable huge page, this first
+  // block lies there, on 4 KiB pages.
   const long first_faults = faultsOfNewBlock (std::size_t{1} << 20);
   const long faults = faultsOfNewBlock (std::size_t{24} << 20);
   std::printf ("advised %d\nfirst faults %ld\nfaults %ld\n",
