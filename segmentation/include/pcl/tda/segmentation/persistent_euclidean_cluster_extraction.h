@@ -270,10 +270,10 @@ public:
    * 4. The distance is the geometric middle sqrt(j high) of the part of that step
    *    after the last piece that joins its object within it (j that join's scale;
    *    low when none does): the pieces are not counted, so they should be with their
-   *    objects in the clusters too. The choice
-   *    is clear when the step spans a factor of at least q and is at least q times
-   *    as long (in log) as every other step with two clusters or more; otherwise
-   *    extract() prints a PCL_WARN and getAutoDistanceIsClear() is false.
+   *    objects in the clusters too. The choice is clear when the step spans a factor
+   *    of at least q and is at least q times as long (in log) as every other step
+   *    with two clusters or more; otherwise extract() prints a PCL_WARN and
+   *    getAutoDistanceIsClear() is false.
    *
    * Only ratios of scales enter, so the rule does not depend on the units; it is
    * deterministic and, as the diagram, independent of the input order and of the
