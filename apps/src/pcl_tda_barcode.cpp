@@ -110,7 +110,7 @@ parseOptions (int argc, char** argv, Options& options)
       options.leaf,
       pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
   command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
   std::string engine_name = pcl::tda::engineName (options.engine);
   command_line.addText ("-engine", engine_name);
   command_line.addText ("-export-phat", options.phat_matrix);
@@ -171,6 +171,9 @@ buildComplex (Builder& builder,
   builder.setRadius (options.radius);
   builder.setMaxDimension (
       triangleFree (options) ? 1 : static_cast<int> (options.dimension) + 1);
+  // The default engine goes through the triangles it does not list: they are refused
+  // over -memory as the listed ones are (a complete graph's ran for hours).
+  builder.setTrianglesInMemoryLimit (triangleFree (options));
   if (options.memory_mib > 0.0)
     builder.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
   pcl::tda::ProgressBar building ("  building");
@@ -267,8 +270,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   }
   if (!built) {
     console.endLine(); // the builder said why
-    print_error ("Set a larger limit with -memory M (MiB), or use a smaller -radius or "
-                 "a voxel grid (-leaf).\n");
+    print_error ("For a complex over the memory limit: set a larger one with -memory M "
+                 "(MiB), or use a smaller -radius or a voxel grid (-leaf).\n");
     return 1;
   }
   seconds.build = console.stepMilliseconds() / 1000.0;

@@ -98,7 +98,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addText ("-svg", options.barcode_svg);
   command_line.addText ("-png", options.picture_png);
   command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
   const std::vector<std::string> files = command_line.parse (argc, argv);
   pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".pcd"}});
   options.input = files[0];
@@ -199,7 +199,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
         [&bar] (std::size_t done, std::size_t total) { bar.update (done, total); });
     estimation.compute (flags);
   }
-  if (flags.empty() && !cloud->empty()) {
+  if (flags.empty()) { // refused, or no surface (an empty cloud too)
     console.error ("Hole detection failed (see above). For a complex over the memory "
                    "limit: set a larger one with -memory M (MiB), or a smaller "
                    "-radius; for a radius refused, the radius it advises.");

@@ -113,7 +113,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addSwitch ("-no-normals", no_normals);
   command_line.addInteger ("-min", min_size, 1, std::numeric_limits<int>::max());
   command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
   command_line.addText ("-svg", options.barcode_svg);
   command_line.addText ("-png", options.picture_png);
   const std::vector<std::string> files = command_line.parse (argc, argv);
@@ -175,6 +175,29 @@ meanColor (const Cloud& cloud, const pcl::Indices& indices)
   return sum;
 }
 
+/** What keeps the colours of \a blob from being read, after the file name ("" when
+ * nothing): no rgb or rgba field, or one that is not PCL's packed colour (one 4-byte
+ * float or unsigned value per point; PCL reads other layouts as black). */
+std::string
+colourFieldProblem (const pcl::PCLPointCloud2& blob)
+{
+  int field = pcl::getFieldIndex (blob, "rgb");
+  if (field < 0)
+    field = pcl::getFieldIndex (blob, "rgba");
+  if (field < 0)
+    return " has no colour (no rgb or rgba field): pcl_tda_regions segments by "
+           "colour. For segmentation by distance alone, use pcl_tda_segment.";
+  const pcl::PCLPointField& colour = blob.fields[field];
+  if (colour.count == 1 && (colour.datatype == pcl::PCLPointField::FLOAT32 ||
+                            colour.datatype == pcl::PCLPointField::UINT32))
+    return "";
+  return "'s " + colour.name + " field holds " + std::to_string (colour.count) +
+         " value(s) of " + std::to_string (pcl::getFieldSize (colour.datatype)) +
+         " byte(s) (" + pcl::getFieldType (colour.datatype) +
+         ") per point: pcl_tda_regions reads PCL's packed colour, one 4-byte value "
+         "per point (SIZE 4, TYPE F or U, COUNT 1).";
+}
+
 int
 run (const Options& options, pcl::tda::ToolConsole& console)
 {
@@ -194,11 +217,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     console.error ("Cannot read the PCD file: " + pcl::tda::errorMessage (failure));
     return 1;
   }
-  if (pcl::getFieldIndex (blob, "rgb") < 0 && pcl::getFieldIndex (blob, "rgba") < 0) {
-    console.error (options.input +
-                   " has no colour (no rgb or rgba field): "
-                   "pcl_tda_regions segments by colour. For segmentation by distance "
-                   "alone, use pcl_tda_segment.");
+  const std::string colour_problem = colourFieldProblem (blob);
+  if (!colour_problem.empty()) {
+    console.error (options.input + colour_problem);
     return 1;
   }
   Cloud::Ptr cloud (new Cloud);

@@ -100,7 +100,7 @@ parseOptions (int argc, char** argv, Options& options)
       options.preprocessing.leaf,
       pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
   command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
   command_line.addText ("-svg", options.barcode_svg);
   command_line.addSwitch ("-png", options.png);
   const std::vector<std::string> files = command_line.parse (argc, argv);

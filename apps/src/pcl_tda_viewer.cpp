@@ -146,7 +146,7 @@ parseOptions (int argc, char** argv, Options& options)
       options.leaf,
       pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
   command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::atLeast (0.0, 1e12));
+      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
   command_line.addText ("-fill", options.fill);
   command_line.addText ("-screenshot", options.screenshot);
   command_line.addText ("-size", size);

@@ -10,6 +10,7 @@
 #include "device_phases.h"
 #include <omp.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <exception>
@@ -117,8 +118,8 @@ buildVietorisRipsComplex (const std::vector<float>& xyz,
   }
   const double radius = settings.radius;
   const int dimension = settings.max_dimension;
-  const MemoryBudget budget =
-      vietorisRipsMemoryBudget (settings.memory_limit, dimension);
+  const int limited = std::max (dimension, settings.limited_dimension);
+  const MemoryBudget budget = vietorisRipsMemoryBudget (settings.memory_limit, limited);
   const VietorisRipsProgress progress (settings.progress, dimension);
   const ScopedOpenMPThreads threads (settings.threads);
   try {
@@ -139,7 +140,7 @@ buildVietorisRipsComplex (const std::vector<float>& xyz,
             count_edges,
             [&estimate] () { return estimate(); },
             size)) {
-      complexFitsMemory (settings.class_name, radius, dimension, budget, size);
+      complexFitsMemory (settings.class_name, radius, limited, budget, size);
       return false;
     }
     // The edges fit the budget; this refuses more than 2^32 - 2 of them only.

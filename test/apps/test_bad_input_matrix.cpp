@@ -153,6 +153,27 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
   }
   expectRefusal (
       "regions", "plain.pcd out.pcd", "plain.pcd has no colour (no rgb or rgba field)");
+  // Colours stored otherwise than PCL's packed rgb, which PCL read as black: one byte
+  // per channel, or a double.
+  const std::string points = "0 0 0 85 90 103 255\n0.01 0 0 85 90 103 255\n";
+  writeFile (path ("bytes.pcd"),
+             "VERSION 0.7\nFIELDS x y z rgb\nSIZE 4 4 4 1\nTYPE F F F U\nCOUNT 1 1 1 "
+             "4\nWIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n" +
+                 points);
+  expectRefusal ("regions",
+                 "bytes.pcd out.pcd",
+                 "bytes.pcd's rgb field holds 4 value(s) of 1 byte(s) (U) per point: "
+                 "pcl_tda_regions reads PCL's packed colour");
+  writeFile (path ("double.pcd"),
+             "VERSION 0.7\nFIELDS x y z rgba\nSIZE 4 4 4 8\nTYPE F F F F\nCOUNT 1 1 1 "
+             "1\nWIDTH 2\nHEIGHT 1\nPOINTS 2\nDATA ascii\n0 0 0 1\n0.01 0 0 1\n");
+  writeFile (path ("no_points.pcd"),
+             "VERSION 0.7\nFIELDS x y z\nSIZE 4 4 4\nTYPE F F F\nCOUNT 1 1 1\nWIDTH "
+             "0\nHEIGHT 1\nPOINTS 0\nDATA ascii\n");
+  expectRefusal ("holes", "no_points.pcd out.pcd", "Hole detection failed (see above)");
+  expectRefusal ("regions",
+                 "double.pcd out.pcd",
+                 "double.pcd's rgba field holds 1 value(s) of 8 byte(s) (F) per point");
   // Normals in the file, one of them NaN at a finite point.
   pcl::PointCloud<pcl::PointXYZRGBNormal> with_normals;
   pcl::io::loadPCDFile (path ("colour.pcd"), with_normals);
@@ -182,11 +203,13 @@ TEST_F (BadInputMatrix, BadOptions)
       {barcode + "-leaf -1",
        "Option -leaf needs a number >= 0 and <= 3.40282e+38, not '-1'."},
       {barcode + "-memory abc",
-       "Option -memory needs a number >= 0 and <= 1e+12, not 'abc'."},
+       "Option -memory needs a number > 0 and <= 1e+12, not 'abc'."},
       {barcode + "-memory 1MB",
-       "Option -memory needs a number >= 0 and <= 1e+12, not '1MB'."},
+       "Option -memory needs a number > 0 and <= 1e+12, not '1MB'."},
       {barcode + "-memory 1e20",
-       "Option -memory needs a number >= 0 and <= 1e+12, not '1e20'."},
+       "Option -memory needs a number > 0 and <= 1e+12, not '1e20'."},
+      {barcode + "-memory 0",
+       "Option -memory needs a number > 0 and <= 1e+12, not '0'."},
       {barcode + "-leaf 1e300",
        "Option -leaf needs a number >= 0 and <= 3.40282e+38, not '1e300'."},
       {barcode + "-engine ripser", "Unknown engine ripser"},
@@ -280,7 +303,7 @@ TEST_F (BadInputMatrix, BadOptions)
        "-fill-mode must be surface or centroid (got 'cube')."},
       {holes + "-fill-mode centroid", "-fill-mode has no use without -fill."},
       {holes + "-fill f.csv", "-fill needs a .pcd file (got 'f.csv')."},
-      {holes + "-memory -1", "Option -memory needs a number >= 0"},
+      {holes + "-memory -1", "Option -memory needs a number > 0"},
       {holes + "-png", "Option -png needs a value."},
       {holes + "-foo", "Unknown option -foo"},
       {"plain.pcd out.csv", "The output out.csv must be a .pcd file."},
@@ -401,6 +424,43 @@ TEST_F (BadInputMatrix, BadOutputs)
   expectRefusal ("generate",
                  "circle nodir/c.pcd",
                  "cannot write nodir/c.pcd: the folder nodir does not exist");
+}
+
+// Under an address-space limit (`ulimit -v`) the default -memory is half of it: the
+// complete graphs of a 13.7k-point scan (94M edges) are refused before they are
+// allocated, with the limit named. They were not (the default was half of the
+// physical memory), and the tools aborted with std::bad_alloc. pcl_tda_segment needs
+// no more than the limit for them (Boruvka's rounds past it): one cluster.
+TEST_F (BadInputMatrix, RefusedUnderAnAddressSpaceLimit)
+{
+#ifdef __SANITIZE_ADDRESS__
+  GTEST_SKIP() << "the address sanitizer reserves more address space than the limit";
+#endif
+  const std::string scan = std::string (PCL_TDA_DATA_DIR) + "/milk_color.pcd";
+  if (!std::filesystem::exists (scan))
+    GTEST_SKIP() << "no " << scan << " (../shared/data)";
+  const auto run_limited = [this] (const std::string& tool_name,
+                                   const std::string& arguments) {
+    return run ("cd " + folder_ + " && ulimit -v 2000000 && timeout 60 " +
+                tool (tool_name) + " " + arguments); // KiB: about 1.9 GiB
+  };
+  for (const auto& [tool_name, arguments] :
+       std::vector<std::pair<std::string, std::string>>{
+           {"barcode", scan + " out.csv -radius 1e30 -dim 0"},
+           {"regions", scan + " out.pcd -radius 1e9"}}) {
+    const FolderState before = stateOf (folder_);
+    const RunResult result = run_limited (tool_name, arguments);
+    EXPECT_EQ (result.exit_code, 1) << result.output;
+    EXPECT_NE (result.output.find ("over the memory limit of 976.6 MiB"),
+               std::string::npos)
+        << result.output;
+    EXPECT_EQ (stateOf (folder_), before) << result.output;
+  }
+  const RunResult segment =
+      run_limited ("segment", scan + " out.pcd -radius 1e30 -plane 0");
+  EXPECT_EQ (segment.exit_code, 0) << segment.output;
+  EXPECT_NE (segment.output.find ("1 cluster at distance 1e+30"), std::string::npos)
+      << segment.output;
 }
 
 TEST_F (BadInputMatrix, HelpPrintsOnlyTheHelp)

@@ -271,6 +271,33 @@ TEST (BarcodeTool, GpuBuilderWritesTheSameOutputs)
   }
 }
 
+// The default engine goes through the triangles without listing them: over -memory
+// they are refused as the other engines' listed ones are (the complete graph of a
+// 13.7k-point scan ran for hours), from the edges' count pass and a sample. The
+// complete graph of the bunny: 78,606 edges (4.8 MiB), 10.4 million triangles.
+TEST (BarcodeTool, DefaultEngineRefusesTrianglesOverTheLimit)
+{
+  PCL_TDA_REQUIRE_DATA ("bunny.pcd");
+  const std::string bunny = test::dataFile ("bunny.pcd");
+  const std::string csv = temporaryPath ("complete.csv");
+  std::remove (csv.c_str());
+  for (const char* options : {"", " -gpu", " -engine fip"}) {
+    const RunResult result =
+        run (tool() + " " + bunny + " " + csv + " -radius 1e30 -memory 20" + options);
+    EXPECT_EQ (result.exit_code, 1) << result.output;
+    EXPECT_NE (result.output.find (" triangles"), std::string::npos) << result.output;
+    EXPECT_NE (result.output.find ("over the memory limit of 20.0 MiB"),
+               std::string::npos)
+        << result.output;
+    EXPECT_FALSE (exists (csv));
+  }
+  // H0 needs the edges alone, which fit.
+  const RunResult h0 =
+      run (tool() + " " + bunny + " " + csv + " -radius 1e30 -memory 20 -dim 0");
+  EXPECT_EQ (h0.exit_code, 0) << h0.output;
+  EXPECT_TRUE (exists (csv));
+}
+
 TEST (BarcodeTool, ExportsTheComplexForPHAT)
 {
   PCL_TDA_REQUIRE_DATA ("bunny.pcd");
@@ -319,6 +346,22 @@ TEST (BarcodeTool, VoxelGridReducesThePoints)
   EXPECT_GT (kept, 100);
   EXPECT_LT (kept, 13704);
   EXPECT_NE (result.output.find ("\"triangles\": 0,"), std::string::npos);
+
+  // The same diagram, byte for byte, for shuffled copies of the scan (a cell's
+  // centroid depended on the order of its points in the last bits).
+  std::string diagrams[3];
+  for (unsigned int seed = 0; seed < 3; ++seed) {
+    const std::string csv = temporaryPath ("leaf_" + std::to_string (seed) + ".csv");
+    const RunResult shuffled = run (tool() + " " + subsample ("milk.pcd", 13704, seed) +
+                                    " " + csv + " -radius 0.02 -leaf 0.005");
+    ASSERT_EQ (shuffled.exit_code, 0) << shuffled.output;
+    std::ostringstream text;
+    text << std::ifstream (csv).rdbuf();
+    diagrams[seed] = text.str();
+  }
+  EXPECT_GT (diagrams[0].size(), 1000u);
+  EXPECT_EQ (diagrams[0], diagrams[1]);
+  EXPECT_EQ (diagrams[0], diagrams[2]);
 }
 
 TEST (BarcodeTool, RefusesBadInputWithoutWritingOutput)

@@ -412,10 +412,17 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
     EXPECT_TRUE (fails (estimation)) << radius;
   }
   {
-    Estimation estimation; // no triangle at a tenth of the spacing
+    Estimation estimation; // no edge at a millionth of the spacing
     estimation.setInputCloud (cloud);
-    estimation.setRadius (surface.spacing * 0.1);
+    estimation.setRadius (surface.spacing * 1e-6);
+    std::size_t reports = 0; // it divided by the H1 columns, 0 here (SIGFPE)
+    estimation.setProgressCallback ([&reports] (std::size_t, std::size_t total) {
+      EXPECT_GT (total, 0u);
+      ++reports;
+    });
     EXPECT_TRUE (fails (estimation));
+    EXPECT_EQ (estimation.getComplex().numEdges(), 0u);
+    EXPECT_GT (reports, 0u);
   }
   // Over MAX_RADIUS_PER_SPACING spacings (the measured spacing is about h): refused
   // before the complex is built, up to the whole square (it ran for minutes before).
@@ -450,6 +457,21 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
     estimation.setInputCloud (cloud);
     estimation.setMemoryLimit (1000); // the complex does not fit
     EXPECT_TRUE (fails (estimation));
+  }
+  {
+    // A refused run after a good one leaves no result of the good one behind (it
+    // kept them when the parameters were refused).
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    pcl::PointCloud<pcl::Boundary> flags;
+    estimation.compute (flags);
+    ASSERT_FALSE (estimation.getHoles().empty());
+    estimation.setMaxTiltAngle (120.0);
+    EXPECT_TRUE (fails (estimation));
+    EXPECT_TRUE (estimation.getRimBandLabels().empty());
+    EXPECT_TRUE (estimation.getPersistenceDiagram().empty());
+    EXPECT_EQ (estimation.getComplex().numVertices(), 0u);
+    EXPECT_EQ (estimation.getUsedRadius(), 0.0);
   }
 }
 

@@ -271,37 +271,67 @@ TEST (VietorisRipsBuilder, RefusesBadInput)
   EXPECT_FALSE (builder.compute (complex));
   builder.setMaxDimension (1);
   EXPECT_TRUE (builder.compute (complex));
+  // Edges only, with the triangles counted against the limit: the complete graph's
+  // 1.3 million triangles, over twice a limit that its 19,900 edges fit.
+  builder.setRadius (4.0); // the cloud's diameter is at most 2 sqrt(3)
+  builder.setMemoryLimit (19900 * builder.BYTES_PER_EDGE);
+  EXPECT_TRUE (builder.compute (complex));
+  EXPECT_EQ (complex.numEdges(), 19900u);
+  builder.setTrianglesInMemoryLimit (true);
+  EXPECT_FALSE (builder.compute (complex));
+  EXPECT_EQ (complex.numSimplices(), 0u);
+  builder.setTrianglesInMemoryLimit (false);
+  builder.setRadius (0.5);
+
+  // Indices past the cloud (it read past its end) or repeated.
+  builder.setMemoryLimit (std::size_t{1} << 30);
+  for (const pcl::Indices& indices :
+       {pcl::Indices{0, 1, 200}, pcl::Indices{0, 50000000}, pcl::Indices{3, 1, 3}}) {
+    builder.setIndices (pcl::IndicesPtr (new pcl::Indices (indices)));
+    EXPECT_FALSE (builder.compute (complex));
+    EXPECT_EQ (complex.numSimplices(), 0u);
+  }
 }
 
 TEST (VietorisRipsBuilder, RefusesHugeComplexBeforeAllocating)
 {
   // 8,000 points within a cube and a radius covering all: 3.2e7 edges (2 GB) and
-  // 8.5e10 triangles. The count pass refuses it without allocating the edges.
+  // 8.5e10 triangles. The count pass refuses it without allocating the edges; with a
+  // search object too, before its searches (it counted every triangle, for a minute).
   std::mt19937 random (9);
   const Cloud::Ptr cloud = randomCloud (random, 8000, false);
-  VietorisRipsBuilder<pcl::PointXYZ> builder;
-  builder.setInputCloud (cloud);
-  builder.setRadius (4.0);
-  builder.setMemoryLimit (std::size_t (1) << 30);
-  FilteredComplex complex;
-  testing::internal::CaptureStderr();
-  EXPECT_FALSE (builder.compute (complex));
-  const std::string error = testing::internal::GetCapturedStderr();
-  // Refused on a sample (the edges are all 31,996,000 pairs).
-  EXPECT_NE (error.find ("would have about 3"), std::string::npos) << error;
-  EXPECT_NE (error.find ("(estimated from a sample)"), std::string::npos) << error;
-  EXPECT_NE (error.find ("over the memory limit of 1.0 GiB"), std::string::npos)
-      << error;
+  for (const bool with_search : {false, true}) {
+    SCOPED_TRACE (with_search ? "k-d tree" : "grid");
+    VietorisRipsBuilder<pcl::PointXYZ> builder;
+    builder.setInputCloud (cloud);
+    if (with_search)
+      builder.setSearchMethod (pcl::search::KdTree<pcl::PointXYZ>::Ptr (
+          new pcl::search::KdTree<pcl::PointXYZ>));
+    builder.setRadius (4.0);
+    builder.setMemoryLimit (std::size_t (1) << 30);
+    FilteredComplex complex;
+    testing::internal::CaptureStderr();
+    EXPECT_FALSE (builder.compute (complex));
+    const std::string error = testing::internal::GetCapturedStderr();
+    // Refused on a sample (the edges are all 31,996,000 pairs).
+    EXPECT_NE (error.find ("would have about 3"), std::string::npos) << error;
+    EXPECT_NE (error.find ("(estimated from a sample)"), std::string::npos) << error;
+    EXPECT_NE (error.find ("over the memory limit of 1.0 GiB"), std::string::npos)
+        << error;
 
-  // Over the limit by triangles only, found from the count pass's bound and a
-  // sample: refused before the edges are listed, naming both sizes.
-  builder.setRadius (0.3);
-  builder.setMemoryLimit (std::size_t (64) << 20);
-  testing::internal::CaptureStderr();
-  EXPECT_FALSE (builder.compute (complex));
-  const std::string triangles_error = testing::internal::GetCapturedStderr();
-  EXPECT_NE (triangles_error.find (" triangles"), std::string::npos) << triangles_error;
-  EXPECT_NE (triangles_error.find ("64.0 MiB"), std::string::npos) << triangles_error;
+    // Over the limit by triangles only, found from the count pass's bound and a
+    // sample: refused before the edges are listed, naming both sizes.
+    builder.setRadius (0.3);
+    builder.setMemoryLimit (std::size_t (64) << 20);
+    testing::internal::CaptureStderr();
+    EXPECT_FALSE (builder.compute (complex));
+    const std::string triangles_error = testing::internal::GetCapturedStderr();
+    EXPECT_NE (triangles_error.find (" triangles"), std::string::npos)
+        << triangles_error;
+    EXPECT_NE (triangles_error.find ("(estimated from a sample)"), std::string::npos)
+        << triangles_error;
+    EXPECT_NE (triangles_error.find ("64.0 MiB"), std::string::npos) << triangles_error;
+  }
 }
 
 // The build reports its progress in thousandths, never backwards, ending at 1000,

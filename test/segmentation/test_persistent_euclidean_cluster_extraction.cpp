@@ -432,6 +432,25 @@ TEST (PersistentEuclideanClusterExtraction, RefusesBadInputWithClearErrors)
   no_input.setMaxDistance (0.1);
   EXPECT_TRUE (contains (errorOf (no_input), "No input cloud"));
 
+  // Indices past the cloud gave clusters with points that do not exist, here after
+  // indices set for a larger cloud; a repeated index counted its point twice.
+  Extraction stale_indices;
+  pcl::IndicesPtr thousand (new pcl::Indices (1000));
+  std::iota (thousand->begin(), thousand->end(), 0);
+  stale_indices.setIndices (thousand);
+  stale_indices.setInputCloud (points);
+  stale_indices.setMaxDistance (0.1);
+  stale_indices.setMinClusterSize (1);
+  EXPECT_TRUE (contains (errorOf (stale_indices),
+                         "Index 2 (at position 2 of the indices) is not a point of "
+                         "the input cloud of 2 points"));
+  Extraction repeated;
+  repeated.setInputCloud (points);
+  repeated.setIndices (pcl::IndicesPtr (new pcl::Indices{0, 1, 1}));
+  repeated.setMaxDistance (0.1);
+  repeated.setMinClusterSize (1);
+  EXPECT_TRUE (contains (errorOf (repeated), "Index 1 appears twice"));
+
   Extraction empty;
   empty.setInputCloud (Cloud::Ptr (new Cloud));
   empty.setMaxDistance (0.1);

@@ -382,6 +382,13 @@ TEST (PersistentRegionGrowingRGB, RefusesBadInput)
     g.setMaxClusterSize (5);
   }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setMemoryLimit (1000); }));
+  // Indices past the cloud (a crash) or repeated.
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) {
+    g.setIndices (pcl::IndicesPtr (new pcl::Indices{0, 1, 50000000}));
+  }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) {
+    g.setIndices (pcl::IndicesPtr (new pcl::Indices{0, 1, 1}));
+  }));
   Normals::Ptr short_normals (new Normals (*normals));
   short_normals->resize (10);
   EXPECT_TRUE (refused (
@@ -427,6 +434,16 @@ TEST (PersistentRegionGrowingRGB, ColoredCloud)
     }
   }
   EXPECT_EQ (colors.size(), regions.size());
+  // A smaller input set for the next frame: the picture stays that of the regions
+  // found, on their cloud (it indexed the new input with them and crashed).
+  Cloud::Ptr next (new Cloud);
+  next->resize (10);
+  growing.setInputCloud (next);
+  const auto again = growing.getColoredCloud();
+  ASSERT_TRUE (again);
+  ASSERT_EQ (again->size(), cloud->size());
+  for (std::size_t i = 0; i < cloud->size(); ++i)
+    EXPECT_EQ ((*again)[i].rgba, (*colored)[i].rgba);
 }
 
 // Rows of points 1 mm apart along, 1 cm across, as on the far side of a depth frame:

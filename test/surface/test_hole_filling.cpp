@@ -217,6 +217,19 @@ TEST (HoleFilling, BadInput)
     EXPECT_FALSE (filler.reconstruct (filled));
     EXPECT_TRUE (filled.empty());
   }
+  // A spacing far finer than the cloud's: grids of petabytes, refused at once (they
+  // were allocated: std::bad_alloc, or 17 GB over a minute at 1e-5). CENTROID mode
+  // has no grid.
+  for (const double spacing : {1e-6, 1e-9}) {
+    pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+    filler.setInputCloud (detected.cloud);
+    filler.setHoles (detected.holes);
+    filler.setSpacing (spacing);
+    EXPECT_FALSE (filler.reconstruct (filled)) << spacing;
+    EXPECT_TRUE (filled.empty());
+    filler.setMode (pcl::tda::HoleFilling<pcl::PointXYZ>::Mode::CENTROID);
+    EXPECT_TRUE (filler.reconstruct (filled)) << spacing;
+  }
   {
     pcl::tda::HoleFilling<pcl::PointXYZ> filler; // no holes: the input as it is
     filler.setInputCloud (detected.cloud);

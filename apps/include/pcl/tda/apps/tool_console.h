@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <cstdio>
+#include <new>
 #include <string>
 
 namespace pcl {
@@ -101,11 +102,12 @@ private:
 };
 
 /** \brief The main() of a tool: "-h" or "--help" prints the help only and exits
- * with 0, fewer than \a least_arguments arguments print it and exit with 1; else
- * has malloc reuse the memory the tool frees (reuseFreedMemory()) and back its heap
- * with huge pages (backHeapWithHugePages()); prints \a intro, reads the
- * options with \a parse and returns the exit code of \a run. A refusal (a
- * pcl::PCLException thrown by either) prints its message and exits with 1. */
+ * with 0, fewer than \a least_arguments arguments print it, say so and exit with 1;
+ * else has malloc reuse the memory the tool frees (reuseFreedMemory()) and back its
+ * heap with huge pages (backHeapWithHugePages()); prints \a intro, reads the options
+ * with \a parse and returns the exit code of \a run. A refusal (a
+ * pcl::PCLException thrown by either) prints its message and exits with 1, and so
+ * does running out of memory (std::bad_alloc) instead of aborting. */
 template <typename Options>
 int
 runTool (int argc,
@@ -127,6 +129,10 @@ runTool (int argc,
   if (argc < least_arguments + 1) {
     print_intro();
     print_help (argv[0]);
+    pcl::console::print_error (
+        "Too few arguments: %d given, at least %d needed (the help is -h).\n",
+        argc - 1,
+        least_arguments);
     return 1;
   }
   reuseFreedMemory();
@@ -140,6 +146,12 @@ runTool (int argc,
   }
   catch (const pcl::PCLException& error) {
     console.error (errorMessage (error));
+    return 1;
+  }
+  catch (const std::bad_alloc&) {
+    console.error ("Out of memory (under a memory limit of the system, e.g. ulimit "
+                   "-v?): use a smaller radius, a voxel grid, or a smaller -memory "
+                   "where the tool has it.");
     return 1;
   }
 }

@@ -7,7 +7,8 @@ namespace pcl {
 namespace tda {
 
 /** \brief The centroids of the occupied cells of a voxel grid of leaf \a leaf
- * (pcl::VoxelGrid): the subsampling of the tools' -leaf options. Defined for
+ * (pcl::VoxelGrid), the same for any order of the points: the subsampling of the
+ * tools' -leaf options. Defined for
  * pcl::PointXYZ and pcl::PointXYZRGBL. */
 template <typename PointT>
 typename pcl::PointCloud<PointT>::Ptr

@@ -18,8 +18,9 @@ public:
   /** \brief Sets the memory the largest structure of a computation (its complex or
    * neighbour graph) may take, in bytes: a larger one is refused, with a message
    * giving its size, before it is stored; far over the limit, in bounded time, from
-   * a sample of the points. Default: half of the physical memory (no limit where it
-   * cannot be read). */
+   * a sample of the points. Default: half of the memory this process may use:
+   * the physical memory, or less under `ulimit -v` or a container's limit
+   * (defaultMemoryLimit(); no limit where none can be read). */
   void
   setMemoryLimit (std::size_t bytes)
   {

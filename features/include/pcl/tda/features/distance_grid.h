@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
@@ -29,6 +30,16 @@ public:
                 const Eigen::Vector2d& high,
                 double cell,
                 const std::vector<Eigen::Vector2d>& seeds);
+
+  /** \brief The bytes of a grid over a box of size \a extent with cells of side
+   * \a cell, as a double (it may not fit the memory, or a size_t). */
+  static double
+  bytesFor (const Eigen::Vector2d& extent, double cell)
+  {
+    return (std::floor (extent.x() / cell) + 3.0) *
+           (std::floor (extent.y() / cell) + 3.0) *
+           static_cast<double> (sizeof (std::uint32_t) + sizeof (double));
+  }
 
   int
   width () const

@@ -268,8 +268,9 @@ protected:
   using pcl::Feature<PointInT, PointOutT>::indices_;
   using pcl::Feature<PointInT, PointOutT>::input_;
 
-  /** \brief Checks the input and the parameters; unlike pcl::Feature, no search
-   * radius or k is needed and no search tree is built. */
+  /** \brief Clears the results of the last run (a refused run leaves none), then
+   * checks the input and the parameters; unlike pcl::Feature, no search radius or k
+   * is needed and no search tree is built. */
   bool
   initCompute () override;
 

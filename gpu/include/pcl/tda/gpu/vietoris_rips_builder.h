@@ -24,6 +24,9 @@ struct DeviceBuildSettings {
   double radius = 0.0;
   /** 1 (edges only) or 2 (triangles too). */
   int max_dimension = 2;
+  /** The largest dimension whose simplices the memory limit bounds (at least
+   * max_dimension; VietorisRipsSettings::getLimitedDimension()). */
+  int limited_dimension = 2;
   /** The bytes the complex may take (device memory on CUDA). */
   std::size_t memory_limit = 0;
   /** OpenMP threads of the OpenMP backend and of the host's copies (0: OpenMP's

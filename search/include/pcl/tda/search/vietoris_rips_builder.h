@@ -54,7 +54,8 @@ public:
 
   /** \brief Sets a PCL search object for the neighbour search (phase 1). Without
    * one, a uniform grid of cell size r is used, which is faster for fixed-radius
-   * search. Either way the neighbours are exactly the points within r. */
+   * search (with one, the grid still bounds and samples the complex for the memory
+   * check). Either way the neighbours are exactly the points within r. */
   void
   setSearchMethod (const SearchPtr& search)
   {

@@ -41,6 +41,34 @@ public:
     return max_dimension_;
   }
 
+  /** \brief At dimension 1, whether the memory limit bounds the triangles of the
+   * complex too, as at dimension 2, although they are not listed (default false):
+   * for H1 from the edges alone (computeCliqueH1Persistence()), whose time and
+   * stored columns grow with the triangles it goes through. The triangles are
+   * bounded from the count pass of the edges and estimated from a sample when the
+   * bound is over the limit, and the complex is refused when the estimate is over
+   * twice the limit, in bounded time (not with setSearchMethod(), whose edges
+   * alone are checked). */
+  void
+  setTrianglesInMemoryLimit (bool limited)
+  {
+    triangles_in_memory_limit_ = limited;
+  }
+
+  bool
+  getTrianglesInMemoryLimit () const
+  {
+    return triangles_in_memory_limit_;
+  }
+
+  /** \brief The largest dimension whose simplices the memory limit bounds: the max
+   * dimension, or 2 with setTrianglesInMemoryLimit(). */
+  int
+  getLimitedDimension () const
+  {
+    return triangles_in_memory_limit_ ? 2 : max_dimension_;
+  }
+
   /** \brief Sets a callback told the progress of a build in thousandths (done,
    * 1000), from one thread, e.g. to drive a ProgressBar: long builds are not
    * silent. */
@@ -53,6 +81,7 @@ public:
 protected:
   double radius_ = 0.0;
   int max_dimension_ = 2;
+  bool triangles_in_memory_limit_ = false;
   ProgressCallback progress_;
 };
 

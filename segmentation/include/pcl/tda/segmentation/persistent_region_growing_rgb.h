@@ -499,7 +499,8 @@ public:
   /** \brief The input cloud coloured by the regions of the last extract(), as
    * pcl::RegionGrowing::getColoredCloud() gives it: each region in its own colour
    * (the Glasbey table, by region order), the other points white; null before a
-   * successful extract(). */
+   * successful extract(). The cloud is the one of that extract(), also when the
+   * input has been replaced since. */
   pcl::PointCloud<pcl::PointXYZRGB>::Ptr
   getColoredCloud () const;
 
@@ -546,7 +547,9 @@ private:
   std::vector<RegionLifetime> lifetimes_;
   PersistenceDiagram region_barcode_;
   std::vector<pcl::PointIndices> last_regions_;
-  bool extracted_ = false;
+  /** The cloud of the last successful extract(), which last_regions_ index (the input
+   * may have been replaced since). */
+  typename pcl::PointCloud<PointT>::ConstPtr extracted_cloud_;
   double chosen_region_threshold_ = 0.0;
   bool auto_threshold_is_clear_ = false;
   std::size_t num_edges_ = 0;

@@ -1,7 +1,9 @@
 #pragma once
 
 #include <pcl/search/kdtree.h>
+#include <pcl/tda/common/point3d.h>
 #include <pcl/tda/features/hole_rims.h>
+#include <pcl/tda/features/projected_polygon.h>
 #include <pcl/pcl_base.h>
 #include <pcl/point_cloud.h>
 
@@ -83,8 +85,10 @@ public:
   }
 
   /** \brief Writes the input points followed by the new points to \a output. On
-   * failure (no input, a rim index out of range, a bad spacing) prints a PCL_ERROR
-   * and leaves \a output empty.
+   * failure (no input, a rim index out of range, a bad spacing, or in SURFACE mode a
+   * spacing so fine for the holes that their grids would take more than the default
+   * memory limit, defaultMemoryLimit(): refused before they are allocated) prints a
+   * PCL_ERROR and leaves \a output empty.
    * \return true on success */
   bool
   reconstruct (pcl::PointCloud<PointT>& output);
@@ -109,6 +113,21 @@ protected:
   using pcl::PCLBase<PointT>::deinitCompute;
 
 private:
+  /** \brief The rim of \a hole as a polygon in its plane: \a rim_points its points
+   * in rim order, \a low and \a high the corners of its box in the plane. */
+  ProjectedPolygon
+  rimPolygon (const HoleRim& hole,
+              std::vector<Point3d>& rim_points,
+              Eigen::Vector2d& low,
+              Eigen::Vector2d& high) const;
+
+  /** \brief Whether the SURFACE grids of spacing \a spacing fit the default memory
+   * limit: the largest hole's distance grid (a quarter spacing) and the new points of
+   * all holes (at most one per node of the grid of one spacing); false after a
+   * PCL_ERROR giving the sizes. */
+  bool
+  gridsFitMemory (double spacing) const;
+
   /** \brief The new points of one hole, appended to \a output. In SURFACE mode
    * \a tree searches the input and \a taken (one 0 per input point, left all 0)
    * marks the surroundings already seen. */

@@ -3,6 +3,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/tda/common/edge_adjacency.h>
 #include <pcl/tda/common/h0_persistence.h>
+#include <pcl/tda/common/index_check.h>
 #include <pcl/tda/features/border_polygons.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/features/minimal_cycles.h>
@@ -21,12 +22,19 @@ template <typename PointInT, typename PointOutT>
 bool
 HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
 {
+  holes_.clear();
+  diagram_.clear();
+  rim_band_labels_.clear();
+  complex_ = FilteredComplex();
+  search_counts_ = SearchCounts();
+  used_radius_ = used_persistence_radius_ = 0.0;
   if (!pcl::PCLBase<PointInT>::initCompute()) {
     PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
                getClassName().c_str());
     return false;
   }
-  if (!checkOptionalLength (radius_, getClassName(), "radius", "to choose it"))
+  if (!indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) ||
+      !checkOptionalLength (radius_, getClassName(), "radius", "to choose it"))
     return false;
   if (!(max_tilt_degrees_ >= 0.0 && max_tilt_degrees_ <= 90.0)) {
     PCL_ERROR ("[pcl::tda::%s::compute] The max tilt angle must be in [0, 90] degrees "
@@ -210,11 +218,6 @@ template <typename PointInT, typename PointOutT>
 void
 HoleBoundaryEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
 {
-  holes_.clear();
-  diagram_.clear();
-  rim_band_labels_.clear();
-  complex_ = FilteredComplex();
-  search_counts_ = SearchCounts();
   if (!findHoles()) {
     holes_.clear();
     rim_band_labels_.clear();

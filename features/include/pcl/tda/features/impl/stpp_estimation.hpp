@@ -1,5 +1,6 @@
 #pragma once
 
+#include <pcl/tda/common/index_check.h>
 #include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/features/stpp_estimation.h>
 #include <pcl/tda/features/stpp_sublevel.h>
@@ -21,7 +22,8 @@ STPPEstimation<PointInT, PointOutT>::initCompute()
                getClassName().c_str());
     return false;
   }
-  return checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
+  return indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) &&
+         checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
 }
 
 template <typename PointInT, typename PointOutT>

@@ -2,6 +2,7 @@
 
 #include <pcl/common/point_tests.h>
 #include <pcl/tda/common/cielab.h>
+#include <pcl/tda/common/index_check.h>
 #include <pcl/tda/features/covariance_signature.h>
 #include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/features/stpp_levels.h>
@@ -30,6 +31,8 @@ TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::initCompute()
                getClassName().c_str());
     return false;
   }
+  if (!indicesAreValid (getClassName() + "::compute", input_->size(), *indices_))
+    return false;
   if (normals_->size() != input_->size()) {
     PCL_ERROR ("[pcl::tda::%s::compute] The normals (%zu) must match the input "
                "cloud (%zu points) one to one.\n",

@@ -2,6 +2,7 @@
 
 #include <pcl/common/time.h>
 #include <pcl/console/print.h>
+#include <pcl/tda/common/index_check.h>
 #include <pcl/tda/gpu/vietoris_rips_builder.h>
 #include <pcl/tda/search/vietoris_rips_checks.h>
 
@@ -25,7 +26,8 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     deinitCompute();
     return false;
   };
-  if (!checkVietorisRipsSettings (getClassName(), radius_, max_dimension_))
+  if (!checkVietorisRipsSettings (getClassName(), radius_, max_dimension_) ||
+      !indicesAreValid (getClassName() + "::compute", input_->size(), *indices_))
     return fail();
   pcl::StopWatch watch;
 
@@ -56,6 +58,7 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
   settings.class_name = getClassName();
   settings.radius = radius_;
   settings.max_dimension = max_dimension_;
+  settings.limited_dimension = getLimitedDimension();
   settings.memory_limit = memory_limit_;
   settings.threads = threads_;
   settings.progress = progress_;

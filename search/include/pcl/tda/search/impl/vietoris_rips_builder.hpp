@@ -3,6 +3,7 @@
 #include <pcl/common/time.h>
 #include <pcl/console/print.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/common/index_check.h>
 #include <pcl/tda/search/clique_complex.h>
 #include <pcl/tda/search/complex_size.h>
 #include <pcl/tda/search/radius_edges.h>
@@ -22,7 +23,7 @@ template <typename PointT>
 MemoryBudget
 VietorisRipsBuilder<PointT>::memoryBudget() const
 {
-  return vietorisRipsMemoryBudget (memory_limit_, max_dimension_);
+  return vietorisRipsMemoryBudget (memory_limit_, getLimitedDimension());
 }
 
 template <typename PointT>
@@ -30,7 +31,7 @@ bool
 VietorisRipsBuilder<PointT>::fitsMemory (const ComplexSize& size) const
 {
   return complexFitsMemory (
-      getClassName(), radius_, max_dimension_, memoryBudget(), size);
+      getClassName(), radius_, getLimitedDimension(), memoryBudget(), size);
 }
 
 template <typename PointT>
@@ -46,7 +47,8 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     deinitCompute();
     return false;
   };
-  if (!checkVietorisRipsSettings (getClassName(), radius_, max_dimension_))
+  if (!checkVietorisRipsSettings (getClassName(), radius_, max_dimension_) ||
+      !indicesAreValid (getClassName() + "::compute", input_->size(), *indices_))
     return fail();
   pcl::StopWatch watch;
   const VietorisRipsProgress progress (progress_, max_dimension_);
@@ -61,7 +63,20 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     points[v] = {point.x, point.y, point.z};
   }
 
-  // Phase 1: the edges, counted before they are listed.
+  // Phase 1: the edges, counted before they are listed. The grid lists them, or
+  // with a search object bounds and samples the complex only: either way one far
+  // over the limit is refused in bounded time (bounds, then a sample).
+  std::unique_ptr<UniformGrid> grid;
+  try {
+    grid = std::make_unique<UniformGrid> (points, radius_, threads_);
+  }
+  catch (const pcl::PCLException& error) {
+    PCL_ERROR ("[pcl::tda::%s::compute] %s\n",
+               getClassName().c_str(),
+               errorMessage (error).c_str());
+    return fail();
+  }
+  ComplexSize size;
   std::vector<FilteredEdge> edges;
   if (search_) {
     // PCL searches compare squared float distances: widen the radius so that no
@@ -82,28 +97,33 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
         if (vertex_of_input[index] != INVALID_SIMPLEX)
           out.push_back (vertex_of_input[index]);
     };
-    const std::vector<std::uint64_t> offsets =
-        countEdgesBySearch (points, radius_, candidates, threads_);
-    progress.reach (VietorisRipsProgress::EDGES_COUNTED);
-    if (!fitsMemory ({static_cast<double> (offsets.back()), 0.0, true}))
+    std::vector<std::uint64_t> offsets;
+    const auto count_edges = [&] () {
+      offsets = countEdgesBySearch (points, radius_, candidates, threads_);
+      std::uint64_t triangle_bound = 0; // (later neighbours choose 2) per vertex
+      for (std::size_t v = 0; v + 1 < offsets.size(); ++v) {
+        const std::uint64_t later = offsets[v + 1] - offsets[v];
+        if (later > 1)
+          triangle_bound += later * (later - 1) / 2;
+      }
+      return EdgeCountSummary{offsets.back(), triangle_bound};
+    };
+    const auto estimate = [&] () {
+      return estimateComplexSize (*grid, points, radius_, AcceptAllPairs{}, threads_);
+    };
+    if (!countEdgesWithinBudget (
+            memoryBudget(), grid->numCandidatePairs(), count_edges, estimate, size)) {
+      fitsMemory (size);
       return fail();
+    }
+    if (!fitsMemory ({size.edges, 0.0, true})) // 32-bit edge ids
+      return fail();
+    progress.reach (VietorisRipsProgress::EDGES_COUNTED);
     edges = listEdgesBySearch (points, radius_, candidates, offsets, threads_);
     progress.reach (VietorisRipsProgress::EDGES_LISTED);
   }
   else {
-    std::unique_ptr<UniformGrid> grid;
-    try {
-      grid = std::make_unique<UniformGrid> (points, radius_, threads_);
-    }
-    catch (const pcl::PCLException& error) {
-      PCL_ERROR ("[pcl::tda::%s::compute] %s\n",
-                 getClassName().c_str(),
-                 errorMessage (error).c_str());
-      return fail();
-    }
-    // Refused in bounded time when far over the limit (bounds, then a sample).
     RadiusEdgeCounts counts;
-    ComplexSize size;
     if (!countRadiusEdgesWithinBudget (
             *grid,
             points,

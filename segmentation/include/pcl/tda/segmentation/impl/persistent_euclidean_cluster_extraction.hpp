@@ -4,6 +4,7 @@
 #include <pcl/console/print.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>
+#include <pcl/tda/common/index_check.h>
 #include <pcl/tda/common/persistent_components.h>
 #include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/search/radius_spanning_forest.h>
@@ -23,6 +24,8 @@ PersistentEuclideanClusterExtraction<PointT>::checkParameters() const
 {
   const std::string name_string = getClassName();
   const char* name = name_string.c_str();
+  if (!indicesAreValid (name_string + "::extract", input_->size(), *indices_))
+    return false;
   if (!(max_distance_ > 0.0) || !std::isfinite (max_distance_)) {
     PCL_ERROR ("[pcl::tda::%s::extract] The max distance must be positive and finite, "
                "not %g: call setMaxDistance().\n",

@@ -5,6 +5,7 @@
 #include <pcl/console/print.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/h0_persistence.h>
+#include <pcl/tda/common/index_check.h>
 #include <pcl/tda/common/persistent_components.h>
 #include <pcl/tda/common/spanning_forest.h>
 #include <pcl/tda/common/system_memory.h>
@@ -22,6 +23,8 @@ bool
 PersistentRegionGrowingRGB<PointT, NormalT>::checkParameters() const
 {
   const char* name = getClassName().c_str();
+  if (!indicesAreValid (getClassName() + "::extract", input_->size(), *indices_))
+    return false;
   if (normals_ && normals_->size() != input_->size()) {
     PCL_ERROR ("[pcl::tda::%s::extract] The normals (%zu) are not one per input point "
                "(%zu).\n",
@@ -146,7 +149,7 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
 {
   regions.clear();
   last_regions_.clear();
-  extracted_ = false;
+  extracted_cloud_.reset();
   diagram_.clear();
   lifetimes_.clear();
   region_barcode_.clear();
@@ -353,7 +356,7 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
               static_cast<std::size_t> (max_pts_per_cluster_),
               largest_oversized);
   last_regions_ = regions;
-  extracted_ = true;
+  extracted_cloud_ = input_;
   deinitCompute();
 }
 
@@ -361,18 +364,19 @@ template <typename PointT, typename NormalT>
 pcl::PointCloud<pcl::PointXYZRGB>::Ptr
 PersistentRegionGrowingRGB<PointT, NormalT>::getColoredCloud() const
 {
-  if (!input_ || !extracted_)
+  if (!extracted_cloud_)
     return nullptr;
+  const pcl::PointCloud<PointT>& cloud = *extracted_cloud_;
   pcl::PointCloud<pcl::PointXYZRGB>::Ptr colored (
       new pcl::PointCloud<pcl::PointXYZRGB>);
-  colored->header = input_->header;
-  colored->width = input_->width;
-  colored->height = input_->height;
-  colored->is_dense = input_->is_dense;
-  colored->resize (input_->size());
-  for (std::size_t i = 0; i < input_->size(); ++i) {
+  colored->header = cloud.header;
+  colored->width = cloud.width;
+  colored->height = cloud.height;
+  colored->is_dense = cloud.is_dense;
+  colored->resize (cloud.size());
+  for (std::size_t i = 0; i < cloud.size(); ++i) {
     pcl::PointXYZRGB& point = (*colored)[i];
-    point.getVector3fMap() = (*input_)[i].getVector3fMap();
+    point.getVector3fMap() = cloud[i].getVector3fMap();
     point.r = point.g = point.b = 255;
   }
   for (std::size_t k = 0; k < last_regions_.size(); ++k) {

@@ -3,6 +3,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/search/kdtree.h>
 #include <pcl/tda/common/point3d.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/features/distance_grid.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/features/projected_polygon.h>
@@ -62,6 +63,10 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
     deinitCompute();
     return false;
   }
+  if (mode_ == Mode::SURFACE && !gridsFitMemory (spacing)) {
+    deinitCompute();
+    return false;
+  }
   output = *input_;
   // One search tree and one set of marks for all holes (SURFACE mode only).
   pcl::search::KdTree<PointT> tree;
@@ -84,6 +89,60 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
 }
 
 template <typename PointT>
+ProjectedPolygon
+HoleFilling<PointT>::rimPolygon (const HoleRim& hole,
+                                 std::vector<Point3d>& rim_points,
+                                 Eigen::Vector2d& low,
+                                 Eigen::Vector2d& high) const
+{
+  rim_points.clear();
+  std::vector<SimplexIndex> cycle;
+  for (const SimplexIndex index : hole.rim) {
+    const PointT& p = (*input_)[index];
+    cycle.push_back (static_cast<SimplexIndex> (rim_points.size()));
+    rim_points.push_back ({p.x, p.y, p.z});
+  }
+  ProjectedPolygon polygon (rim_points, cycle);
+  low = high = polygon.project (rim_points.front());
+  for (const Point3d& p : rim_points) {
+    low = low.cwiseMin (polygon.project (p));
+    high = high.cwiseMax (polygon.project (p));
+  }
+  return polygon;
+}
+
+template <typename PointT>
+bool
+HoleFilling<PointT>::gridsFitMemory (double spacing) const
+{
+  double largest_grid = 0.0, new_points = 0.0;
+  std::vector<Point3d> rim_points;
+  Eigen::Vector2d low, high;
+  for (const HoleRim& hole : holes_) {
+    if (hole.rim.size() < 3)
+      continue;
+    rimPolygon (hole, rim_points, low, high);
+    const Eigen::Vector2d extent = high - low;
+    largest_grid =
+        std::max (largest_grid, DistanceGrid::bytesFor (extent, spacing / 4.0));
+    new_points += (extent.x() / spacing + 1.0) * (extent.y() / spacing + 1.0);
+  }
+  const double bytes = largest_grid + new_points * sizeof (PointT);
+  const std::size_t limit = defaultMemoryLimit();
+  if (bytes <= static_cast<double> (limit))
+    return true;
+  PCL_ERROR ("[pcl::tda::%s::reconstruct] At the spacing %g the holes would take up "
+             "to %.0f new points and grids of %s, over the memory limit of %s (half of "
+             "the usable memory). Use a larger spacing (0: the cloud's).\n",
+             class_name_.c_str(),
+             spacing,
+             new_points,
+             formatBytes (bytes).c_str(),
+             formatBytes (static_cast<double> (limit)).c_str());
+  return false;
+}
+
+template <typename PointT>
 void
 HoleFilling<PointT>::fillHole (const HoleRim& hole,
                                double spacing,
@@ -92,15 +151,9 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
                                pcl::PointCloud<PointT>& output) const
 {
   using namespace hole_filling_detail;
-  // The rim's points, numbered 0.. for the polygon.
   std::vector<Point3d> rim_points;
-  std::vector<SimplexIndex> cycle;
-  for (const SimplexIndex index : hole.rim) {
-    const PointT& p = (*input_)[index];
-    cycle.push_back (static_cast<SimplexIndex> (rim_points.size()));
-    rim_points.push_back ({p.x, p.y, p.z});
-  }
-  const ProjectedPolygon polygon (rim_points, cycle);
+  Eigen::Vector2d low, high;
+  const ProjectedPolygon polygon = rimPolygon (hole, rim_points, low, high);
   const auto nearestRimPoint = [&] (const Eigen::Vector3d& position) {
     std::size_t nearest = 0;
     double best = std::numeric_limits<double>::infinity();
@@ -176,11 +229,6 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
   };
 
   // The nodes of a grid of one spacing inside the rim, away from every point.
-  Eigen::Vector2d low = polygon.project (rim_points.front()), high = low;
-  for (const Point3d& p : rim_points) {
-    low = low.cwiseMin (polygon.project (p));
-    high = high.cwiseMax (polygon.project (p));
-  }
   const DistanceGrid gaps (low, high, spacing / 4.0, around);
   const auto first = [&] (double coordinate) {
     return static_cast<long> (std::ceil (coordinate / spacing));
