@@ -23,6 +23,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <functional>
@@ -49,6 +50,8 @@ static_assert (static_cast<float> (MAX_REMOVE) == pcl::tda::MAX_HOLE_REMOVAL_FRA
 
 /** The most instances per category and views per instance of shapes. */
 constexpr long MAX_INSTANCES = 1000, MAX_VIEWS = 1000;
+/** At most this many views in a data set: a million files of about 100 KB. */
+constexpr std::uint64_t MAX_TOTAL_VIEWS = 1000000;
 /** The largest perturbation -perturb accepts, in metres. */
 constexpr double MAX_PERTURB = 0.1;
 /** The largest noise multiplier -noise accepts for shapes. */
@@ -150,9 +153,11 @@ printHelp (const char* program)
   print_info ("    -instances N = instances per category, 1 to %ld (default %zu)\n",
               MAX_INSTANCES,
               pcl::tda::ObjectViewParameters().instances);
-  print_info ("    -views N   = views per instance, 1 to %ld (default %zu)\n",
+  print_info ("    -views N   = views per instance, 1 to %ld (default %zu); at most "
+              "%zu views in all\n",
               MAX_VIEWS,
-              pcl::tda::ObjectViewParameters().views);
+              pcl::tda::ObjectViewParameters().views,
+              static_cast<std::size_t> (MAX_TOTAL_VIEWS));
   print_info ("    -categories C1,C2,.. = the categories, each once (default: "
               "all)\n");
   print_info ("    -perturb A = moves every coordinate of every point by a uniform "
@@ -335,6 +340,16 @@ parseOptions (int argc, char** argv, Options& options)
                                << argumentOf (argc, argv, "-noise") << "'.");
     if (!categories.empty())
       options.categories = parseCategories (categories);
+    const auto views = static_cast<std::uint64_t> (options.instances) *
+                       static_cast<std::uint64_t> (options.views) *
+                       options.categories.size();
+    if (views > MAX_TOTAL_VIEWS)
+      PCL_THROW_EXCEPTION (
+          pcl::BadArgumentException,
+          "-instances " << options.instances << " x -views " << options.views << " x "
+                        << options.categories.size() << " categories would be " << views
+                        << " views (files), over " << MAX_TOTAL_VIEWS
+                        << ": use fewer instances or views.");
   }
   if (options.n > 0 && kind == "depth-regions")
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
@@ -467,10 +482,14 @@ runTabletop (const Options& options,
   }
   print_info ("Labels: table ");
   print_value ("%u", pcl::tda::TABLE_LABEL);
-  print_info (", objects ");
-  print_value ("%u", pcl::tda::FIRST_OBJECT_LABEL);
-  print_info (" to ");
-  print_value ("%zu\n", pcl::tda::FIRST_OBJECT_LABEL + scene.objects.size() - 1);
+  if (scene.objects.empty())
+    print_info (", no objects\n");
+  else {
+    print_info (", objects ");
+    print_value ("%u", pcl::tda::FIRST_OBJECT_LABEL);
+    print_info (" to ");
+    print_value ("%zu\n", pcl::tda::FIRST_OBJECT_LABEL + scene.objects.size() - 1);
+  }
   return saveCloud (options.output, *scene.cloud, outputs, console) ? 0 : 1;
 }
 

@@ -89,6 +89,9 @@ ToolCommandLine::addSwitch (const std::string& name, bool& value)
 std::optional<double>
 parseWholeNumber (const std::string& text)
 {
+  // strtod also reads hexadecimal ("0x10" is 16): decimal numbers only.
+  if (text.find_first_of ("xX") != std::string::npos)
+    return std::nullopt;
   char* end = nullptr;
   const double value = std::strtod (text.c_str(), &end);
   if (!readWhole (text, end) || !std::isfinite (value))

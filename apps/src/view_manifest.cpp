@@ -164,8 +164,14 @@ checkUnique (const std::string& manifest, const std::vector<Row>& rows)
 ViewManifest
 readViewManifest (const std::string& path)
 {
-  const std::vector<Row> rows = readRows (path);
+  std::vector<Row> rows = readRows (path);
   checkUnique (path, rows);
+  // In a canonical order, (category, instance, view) being unique: the rows' order
+  // in the file does not change the splits, the training or the scores.
+  std::sort (rows.begin(), rows.end(), [] (const Row& a, const Row& b) {
+    return std::tie (a.category, a.instance, a.name) <
+           std::tie (b.category, b.instance, b.name);
+  });
 
   ViewManifest manifest;
   std::map<std::string, std::map<std::string, std::vector<std::size_t>>> grouped;

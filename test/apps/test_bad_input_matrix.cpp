@@ -323,6 +323,9 @@ TEST_F (BadInputMatrix, BadOptions)
        "Option -noise needs a number >= 0 and <= 3.40282e+38, not 'abc'."},
       {"circle out.pcd -seed -1", "Option -seed needs an integer >= 0, not '-1'."},
       {"tabletop out.pcd -objects 99", "Option -objects needs an integer from 0 to 8"},
+      {"shapes set -instances 1000 -views 1000",
+       "-instances 1000 x -views 1000 x 12 categories would be 12000000 views (files), "
+       "over 1000000: use fewer instances or views."},
       {"circle out.pcd -objects 2",
        "Option -objects applies to tabletop, regions and depth-regions only."},
       {"circle out.pcd -radius 2", "Unknown option -radius"},

@@ -102,15 +102,35 @@ TEST (ViewManifest, ReadsCategoriesInstancesAndViews)
   EXPECT_EQ (manifest.instances[0].name, "b2");
   EXPECT_EQ (manifest.instances[1].name, "b7");
   EXPECT_EQ (manifest.instances[2].name, "m1");
-  EXPECT_EQ (manifest.instances[2].views, (std::vector<std::size_t>{0, 1}));
+  // The views by category, instance and view name: b2 0, b7 0, m1 0, m1 1, m2 0.
+  EXPECT_EQ (manifest.instances[2].views, (std::vector<std::size_t>{2, 3}));
   EXPECT_EQ (manifest.category_instances[1], (std::vector<std::size_t>{2, 3}));
   ASSERT_EQ (manifest.views.size(), 5u);
-  EXPECT_EQ (manifest.views[2].path, "b,1.pcd");
-  EXPECT_EQ (manifest.views[2].file, folder + "/b,1.pcd");
-  EXPECT_EQ (manifest.views[2].category, 0u);
-  EXPECT_EQ (manifest.views[2].instance, 1u);
-  EXPECT_EQ (manifest.views[2].line, 5u);
-  EXPECT_EQ (manifest.views[1].name, "1");
+  EXPECT_EQ (manifest.views[1].path, "b,1.pcd");
+  EXPECT_EQ (manifest.views[1].file, folder + "/b,1.pcd");
+  EXPECT_EQ (manifest.views[1].category, 0u);
+  EXPECT_EQ (manifest.views[1].instance, 1u);
+  EXPECT_EQ (manifest.views[1].line, 5u);
+  EXPECT_EQ (manifest.views[3].name, "1");
+
+  // The same manifest from its rows in another order (the classification changed
+  // with the order of the rows).
+  writeFile (folder + "/shuffled.csv",
+             "path,category,instance,view\n"
+             "d.pcd,bowl,b2,0\n"
+             "a/y.pcd,mug,m1,1\n"
+             "c.pcd,mug,m2,0\n"
+             "\"b,1.pcd\",bowl,b7,0\n"
+             "a/x.pcd,mug,m1,0\n");
+  const ViewManifest shuffled = readViewManifest (folder + "/shuffled.csv");
+  ASSERT_EQ (shuffled.views.size(), manifest.views.size());
+  for (std::size_t v = 0; v < manifest.views.size(); ++v) {
+    EXPECT_EQ (shuffled.views[v].path, manifest.views[v].path) << v;
+    EXPECT_EQ (shuffled.views[v].name, manifest.views[v].name) << v;
+    EXPECT_EQ (shuffled.views[v].instance, manifest.views[v].instance) << v;
+  }
+  for (std::size_t i = 0; i < manifest.instances.size(); ++i)
+    EXPECT_EQ (shuffled.instances[i].views, manifest.instances[i].views) << i;
 }
 
 TEST (ViewManifest, RefusesWhatTheProtocolCannotUse)

@@ -108,6 +108,7 @@ TEST (ToolCommandLine, RefusesBadArgumentsNamingThem)
       {{"-radius", "inf"}, "Option -radius needs a number > 0, not 'inf'."},
       {{"-radius", "nan"}, "Option -radius needs a number > 0, not 'nan'."},
       {{"-radius", "1e999"}, "Option -radius needs a number > 0, not '1e999'."},
+      {{"-radius", "0x10"}, "Option -radius needs a number > 0, not '0x10'."},
       {{"-radius", "1", "-leaf", "-1"}, "Option -leaf needs a number >= 0, not '-1'."},
       {{"-radius", "1", "-dim", "abc"},
        "Option -dim needs an integer from 0 to 1, not 'abc'."},

@@ -475,6 +475,26 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
   }
 }
 
+// pcl::Feature's search settings, which a pcl::BoundaryEstimation user sets, are not
+// used: a warning says so (they were ignored silently).
+TEST (HoleBoundaryEstimation, WarnsThatFeatureSearchSettingsAreNotUsed)
+{
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 1);
+  Estimation estimation;
+  estimation.setInputCloud (positionsOf (surface));
+  estimation.setRadiusSearch (0.05);
+  pcl::PointCloud<pcl::Boundary> flags;
+  testing::internal::CaptureStderr();
+  estimation.compute (flags);
+  const std::string warning = testing::internal::GetCapturedStderr();
+  EXPECT_NE (warning.find ("setRadiusSearch(), setKSearch() and setSearchMethod() are "
+                           "not used: the complex's radius is setRadius()"),
+             std::string::npos)
+      << warning;
+  EXPECT_FALSE (flags.empty());
+  EXPECT_NE (estimation.getUsedRadius(), 0.05);
+}
+
 TEST (HoleBoundaryEstimation, ReportsProgressOfBothHalves)
 {
   const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 6);

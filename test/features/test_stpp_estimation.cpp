@@ -307,6 +307,23 @@ TEST (STPPEstimation, HomologyPartsMatchTheFullSignature)
              pcl::tda::STPP_SIZE_OFFSET - pcl::tda::STPP_BETTI1_OFFSET + 1);
 }
 
+// Through a pcl::Feature reference (as a pipeline holding feature estimators calls
+// them): one point, the signature, as with the class itself (it was one point per
+// input point, all but the first zero).
+TEST (STPPEstimation, OneSignatureThroughTheFeatureBase)
+{
+  const Cloud::Ptr cloud = annulus (0.3f, 1.0f, 0.015f, 11);
+  Estimation stpp;
+  stpp.setInputCloud (cloud);
+  pcl::Feature<pcl::PointXYZ, pcl::tda::STPPSignature>& feature = stpp;
+  pcl::PointCloud<pcl::tda::STPPSignature> output;
+  feature.compute (output);
+  ASSERT_EQ (output.size(), 1u);
+  EXPECT_EQ (output.width, 1u);
+  EXPECT_EQ (output.height, 1u);
+  EXPECT_TRUE (sameSignature (output[0], signatureOf (cloud, 1)));
+}
+
 TEST (STPPEstimation, SignatureIsARegisteredPointType)
 {
   const auto fields = pcl::getFields<pcl::tda::STPPSignature>();

@@ -99,8 +99,8 @@ private:
   std::set<std::string> given_;
 };
 
-/** \brief The finite number \a text spells as a whole (std::strtod: no leading space,
- * nothing after it), or none. */
+/** \brief The finite decimal number \a text spells as a whole (std::strtod: no
+ * leading space, nothing after it, not hexadecimal), or none. */
 std::optional<double>
 parseWholeNumber (const std::string& text);
 

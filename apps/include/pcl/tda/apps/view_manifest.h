@@ -29,15 +29,16 @@ struct ManifestView {
 struct ManifestInstance {
   std::size_t category = 0;
   std::string name;
-  /** \brief Its views, as indices in ViewManifest::views, in manifest order. */
+  /** \brief Its views, as indices in ViewManifest::views, in view name order. */
   std::vector<std::size_t> views;
 };
 
 /** \brief The views of an object category data set (thesis Sec 6.5.1: categories,
  * several instances per category, several views per instance), as listed by a
  * manifest CSV file such as `pcl_tda_generate shapes` writes. Categories are sorted
- * by name, the instances by category and name, so that everything derived from a
- * manifest is deterministic. */
+ * by name, the instances by category and name, the views by category, instance and
+ * view name, so that everything derived from a manifest is deterministic, whatever
+ * the order of its rows. */
 struct ViewManifest {
   std::vector<std::string> categories;
   std::vector<ManifestInstance> instances;

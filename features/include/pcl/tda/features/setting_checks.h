@@ -1,7 +1,8 @@
 #pragma once
 
-// The check the feature classes' initCompute() make of a length setting that 0
-// makes automatic (a radius, a band width).
+// The checks the feature classes' initCompute() make: of a length setting that 0
+// makes automatic (a radius, a band width), and of pcl::Feature's search settings,
+// which they do not use.
 
 #include <pcl/console/print.h>
 
@@ -29,6 +30,24 @@ checkOptionalLength (double value,
              zero_means,
              value);
   return false;
+}
+
+/** \brief Warns (PCL_WARN naming the class \a class_name) when pcl::Feature's search
+ * settings were given: \a search_radius (setRadiusSearch()), \a k (setKSearch()) or
+ * a search tree (setSearchMethod()). The feature classes of this library build
+ * their own complex, of the radius set by their setRadius(), and a PCL user who set
+ * these as for pcl::BoundaryEstimation would otherwise not know they were ignored. */
+inline void
+warnUnusedFeatureSearch (const std::string& class_name,
+                         double search_radius,
+                         int k,
+                         bool has_search_tree)
+{
+  if (search_radius != 0.0 || k != 0 || has_search_tree)
+    PCL_WARN ("[pcl::tda::%s::compute] setRadiusSearch(), setKSearch() and "
+              "setSearchMethod() are not used: the complex's radius is setRadius() "
+              "(0: chosen from the point spacing).\n",
+              class_name.c_str());
 }
 
 } // namespace tda

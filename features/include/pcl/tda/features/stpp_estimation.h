@@ -152,12 +152,6 @@ public:
     return scale_invariant_;
   }
 
-  /** \brief Overrides pcl::Feature::compute(): one signature for the whole cloud
-   * (the indexed points), as pcl::VFHEstimation gives; an empty output, with a
-   * PCL_ERROR, on failure. */
-  void
-  compute (PointCloudOut& output);
-
   /** \brief The thesis' raw STPP vector of level 0 (pairingVector()) for the
    * homology set, from the last compute(): of the whole cloud when it has at most
    * setMaxPoints() points (or with setMaxPoints (0)), else of its sample. */
@@ -194,11 +188,15 @@ protected:
   using pcl::Feature<PointInT, PointOutT>::indices_;
   using pcl::Feature<PointInT, PointOutT>::input_;
 
-  /** \brief Checks the input and the parameters; unlike pcl::Feature, no search
-   * radius or k is needed and no search tree is built. */
+  /** \brief Clears the results of the last compute(), then checks the input and the
+   * parameters; unlike pcl::Feature, no search radius or k is needed and no search
+   * tree is built. */
   bool
   initCompute () override;
 
+  /** \brief One signature for the whole cloud (the indexed points), as
+   * pcl::VFHEstimation gives: \a output becomes one point (pcl::Feature::compute()
+   * sized it for every indexed point); empty, with a PCL_ERROR, on failure. */
   void
   computeFeature (PointCloudOut& output) override;
 

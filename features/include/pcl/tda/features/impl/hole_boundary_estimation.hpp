@@ -33,6 +33,8 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
                getClassName().c_str());
     return false;
   }
+  warnUnusedFeatureSearch (
+      getClassName(), this->search_radius_, this->k_, this->tree_ != nullptr);
   if (!indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) ||
       !checkOptionalLength (radius_, getClassName(), "radius", "to choose it"))
     return false;

@@ -17,34 +17,19 @@ template <typename PointInT, typename PointOutT>
 bool
 STPPEstimation<PointInT, PointOutT>::initCompute()
 {
+  pairing_vector_.clear();
+  level_radii_.clear();
+  level_diagrams_.clear();
+  cloud_size_ = 0.0;
   if (!pcl::PCLBase<PointInT>::initCompute()) {
     PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
                getClassName().c_str());
     return false;
   }
+  warnUnusedFeatureSearch (
+      getClassName(), this->search_radius_, this->k_, this->tree_ != nullptr);
   return indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) &&
          checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
-}
-
-template <typename PointInT, typename PointOutT>
-void
-STPPEstimation<PointInT, PointOutT>::compute (PointCloudOut& output)
-{
-  pairing_vector_.clear();
-  level_radii_.clear();
-  level_diagrams_.clear();
-  cloud_size_ = 0.0;
-  if (!initCompute()) {
-    output.width = output.height = 0;
-    output.clear();
-    return;
-  }
-  output.header = input_->header;
-  output.width = output.height = 1;
-  output.is_dense = true;
-  output.resize (1);
-  computeFeature (output);
-  this->deinitCompute();
 }
 
 template <typename PointInT, typename PointOutT>
@@ -151,6 +136,9 @@ template <typename PointInT, typename PointOutT>
 void
 STPPEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
 {
+  output.width = output.height = 1;
+  output.is_dense = true;
+  output.resize (1);
   float* histogram = output[0].histogram;
   std::fill (histogram, histogram + STPP_SIGNATURE_SIZE, 0.0f);
   if (!computeSignature (histogram)) {

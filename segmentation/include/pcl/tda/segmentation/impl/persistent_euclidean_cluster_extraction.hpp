@@ -213,11 +213,13 @@ PersistentEuclideanClusterExtraction<PointT>::extract (
     auto_distance_is_clear_ = choice.clear;
     if (!choice.clear)
       PCL_WARN ("[pcl::tda::%s::extract] The H0 diagram shows no clear gap: the "
-                "automatic distance %g (%zu clusters, stable from %g to %g; sampling "
-                "scale %g) is a guess. Check the barcode, or set the distance.\n",
+                "automatic distance %g (in a step of %zu cluster%s, pieces of larger "
+                "ones not counted, from %g to %g; sampling scale %g) is a guess. Check "
+                "the barcode, or set the distance.\n",
                 getClassName().c_str(),
                 chosen_distance_,
                 choice.num_clusters,
+                choice.num_clusters == 1 ? "" : "s",
                 choice.low,
                 choice.high,
                 choice.sampling_scale);

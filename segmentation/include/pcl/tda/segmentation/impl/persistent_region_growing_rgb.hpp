@@ -296,11 +296,12 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
       if (!choice.clear)
         PCL_WARN (
             "[pcl::tda::%s::extract] The region barcode shows no clear gap (the "
-            "step taken: %zu regions from Delta E %g to %g): the automatic "
+            "step taken: %zu region%s from Delta E %g to %g): the automatic "
             "region colour threshold %g is a guess. Check the barcode, or set the "
             "threshold.\n",
             name,
             choice.num_regions,
+            choice.num_regions == 1 ? "" : "s",
             choice.low,
             choice.high,
             chosen_region_threshold_);
