@@ -131,6 +131,8 @@ parseOptions (int argc, char** argv, Options& options)
   if (options.png && options.barcode_svg.empty() && options.diagram_svg.empty())
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "-png has no use without -svg or -diagram.");
+  pcl::tda::checkOptionExtension ("-svg", options.barcode_svg, ".svg");
+  pcl::tda::checkOptionExtension ("-diagram", options.diagram_svg, ".svg");
 }
 
 /** True when H1 comes from the edges alone (computeCliqueH1Persistence()): the

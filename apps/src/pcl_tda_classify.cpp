@@ -77,20 +77,6 @@ printHelp (const char* program)
   print_info ("  Outputs are written only when the whole run succeeds.\n");
 }
 
-/** Requires \a path, the value of \a option, to end in \a extension. */
-void
-checkExtension (const std::string& option,
-                const std::string& path,
-                const std::string& extension)
-{
-  if (!path.empty() &&
-      (path.size() <= extension.size() ||
-       path.compare (path.size() - extension.size(), extension.size(), extension) != 0))
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         option << " needs a " << extension << " file (got '" << path
-                                << "').");
-}
-
 /** Reads the command line into \a options.
  * \throws pcl::BadArgumentException naming the option at fault */
 void
@@ -118,10 +104,10 @@ parseOptions (int argc, char** argv, Options& options)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "-scaling must be zscore or minmax (got '" << options.scaling
                                                                     << "').");
-  checkExtension ("-csv", options.csv, ".csv");
-  checkExtension ("-features", options.features, ".csv");
-  checkExtension ("-svg", options.svg, ".svg");
-  checkExtension ("-png", options.png, ".png");
+  pcl::tda::checkOptionExtension ("-csv", options.csv, ".csv");
+  pcl::tda::checkOptionExtension ("-features", options.features, ".csv");
+  pcl::tda::checkOptionExtension ("-svg", options.svg, ".svg");
+  pcl::tda::checkOptionExtension ("-png", options.png, ".png");
   const auto specs = pcl::tda::parseDescriptorList (options.descriptors);
   if (!options.confusion.empty() &&
       std::none_of (specs.begin(), specs.end(), [&options] (const auto& spec) {

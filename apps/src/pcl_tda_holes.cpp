@@ -110,11 +110,10 @@ parseOptions (int argc, char** argv, Options& options)
   if (command_line.given ("-fill-mode") && options.filled.empty())
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "-fill-mode has no use without -fill.");
-  if (!options.filled.empty() &&
-      (options.filled.size() < 4 ||
-       options.filled.compare (options.filled.size() - 4, 4, ".pcd") != 0))
-    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         "-fill needs a .pcd file (got '" << options.filled << "').");
+  pcl::tda::checkOptionExtension ("-fill", options.filled, ".pcd");
+  pcl::tda::checkOptionExtension ("-csv", options.csv, ".csv");
+  pcl::tda::checkOptionExtension ("-svg", options.barcode_svg, ".svg");
+  pcl::tda::checkOptionExtension ("-png", options.picture_png, ".png");
 }
 
 /** Writes the holes as CSV to \a path: one row per hole, the rim's input indices

@@ -49,10 +49,14 @@ printHelp (const char* program)
   print_info ("  where options are:\n");
   print_info ("    -radius R   = largest distance between neighbours (default: %g "
               "times the\n                  cloud's spacing, the %g quantile of the "
-              "distances to the %zu-th\n                  nearest point)\n",
+              "distances to the %zu-th\n                  nearest point); a point "
+              "with fewer than %zu neighbours within it is\n                  also "
+              "joined to its %zu nearest points, whatever their distance\n",
               RegionSettings::RADIUS_PER_SPACING,
               RegionSettings::SPACING_QUANTILE,
-              RegionSettings::SPACING_NEIGHBOR);
+              RegionSettings::SPACING_NEIGHBOR,
+              RegionSettings::MIN_NEIGHBORS,
+              3 * RegionSettings::MIN_NEIGHBORS);
   print_info ("    -image-ratio K = in an organized cloud (a depth image), also join "
               "neighbouring\n                  pixels up to K times their range "
               "apart, beyond the radius\n                  (default %g; 0: not "
@@ -128,6 +132,8 @@ parseOptions (int argc, char** argv, Options& options)
                          "-angle has no use with -no-normals.");
   settings.use_normals = !no_normals;
   settings.min_size = static_cast<pcl::uindex_t> (min_size);
+  pcl::tda::checkOptionExtension ("-svg", options.barcode_svg, ".svg");
+  pcl::tda::checkOptionExtension ("-png", options.picture_png, ".png");
 }
 
 /** The normals of the input: true with \a normals null when it has none (they are

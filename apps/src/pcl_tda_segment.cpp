@@ -116,6 +116,7 @@ parseOptions (int argc, char** argv, Options& options)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException, "-piece has no use without -auto.");
   if (options.png && options.barcode_svg.empty())
     PCL_THROW_EXCEPTION (pcl::BadArgumentException, "-png has no use without -svg.");
+  pcl::tda::checkOptionExtension ("-svg", options.barcode_svg, ".svg");
 }
 
 int

@@ -54,6 +54,16 @@ readWhole (const std::string& text, const char* end)
          end == text.c_str() + text.size();
 }
 
+/** Whether \a path ends in \a extension, after a name (a file name, not the
+ * extension alone); any path when \a extension is "". */
+bool
+hasExtension (const std::string& path, const std::string& extension)
+{
+  return path.size() > extension.size() &&
+         path.compare (path.size() - extension.size(), extension.size(), extension) ==
+             0;
+}
+
 } // namespace
 
 void
@@ -195,15 +205,23 @@ checkArguments (const std::vector<std::string>& arguments,
                              << needed.str() << ", not " << arguments.size()
                              << (arguments.size() == 1 ? " argument." : " arguments."));
   }
-  for (std::size_t i = 0; i < expected.size(); ++i) {
-    const std::string& path = arguments[i];
-    const std::string& extension = expected[i].extension;
-    if (path.size() <= extension.size() ||
-        path.compare (path.size() - extension.size(), extension.size(), extension) != 0)
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    if (!hasExtension (arguments[i], expected[i].extension))
       PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                           "The " << expected[i].role << " " << path << " must be a "
-                                  << extension << " file.");
-  }
+                           "The " << expected[i].role << " " << arguments[i]
+                                  << " must be a " << expected[i].extension
+                                  << " file.");
+}
+
+void
+checkOptionExtension (const std::string& option,
+                      const std::string& path,
+                      const std::string& extension)
+{
+  if (!path.empty() && !hasExtension (path, extension))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         option << " needs a " << extension << " file (got '" << path
+                                << "').");
 }
 
 } // namespace tda

@@ -196,7 +196,10 @@ stpp (const ViewInput& input, STPPHomology homology)
   pcl::PointCloud<STPPSignature> output;
   estimation.compute (output);
   if (output.size() != 1)
-    fail ("STPP gave no signature");
+    fail ("STPP gave no signature (fewer than " +
+          std::to_string (SURFACE_SPACING_NEIGHBORS + 1) +
+          " distinct finite points, or a complex over the memory limit, half of the "
+          "usable memory: a smaller -radius)");
   return stppSignatureValues (output[0], homology);
 }
 

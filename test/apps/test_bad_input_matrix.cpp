@@ -359,16 +359,20 @@ TEST_F (BadInputMatrix, BadOutputs)
 {
   const std::string circle_link = path ("circle_link.csv");
   std::filesystem::create_symlink ("good.pcd", circle_link);
+  std::filesystem::create_symlink ("good.pcd", path ("circle_link.svg"));
+  std::filesystem::create_directories (path ("folder.svg"));
   const std::vector<std::pair<std::string, std::string>> barcode_cases{
       {"good.pcd out.csv -radius 0.3 -svg nodir/b.svg",
        "cannot write nodir/b.svg: the folder nodir does not exist"},
-      {"good.pcd out.csv -radius 0.3 -svg x.pcd",
-       "cannot write x.pcd: it is a directory"},
+      {"good.pcd out.csv -radius 0.3 -svg folder.svg",
+       "cannot write folder.svg: it is a directory"},
+      {"good.pcd out.csv -radius 0.3 -svg b.txt",
+       "-svg needs a .svg file (got 'b.txt')."},
       {"good.pcd out.csv -radius 0.3 -svg old.svg -diagram old.svg",
        "-svg and -diagram name the same file old.svg"},
       {"good.pcd out.csv -radius 0.3 -export-phat ./out.csv",
        "output and -export-phat name the same file ./out.csv"},
-      {"good.pcd out.csv -radius 0.3 -diagram good.pcd",
+      {"good.pcd out.csv -radius 0.3 -diagram circle_link.svg",
        "refusing to overwrite the input file good.pcd (-diagram)"},
       {"good.pcd circle_link.csv -radius 0.3",
        "refusing to overwrite the input file good.pcd (output)"},
@@ -391,8 +395,9 @@ TEST_F (BadInputMatrix, BadOutputs)
        "cannot write nodir/out.pcd: the folder nodir does not exist"},
       {"colour.pcd out.pcd -png nodir/r.png",
        "cannot write nodir/r.png: the folder nodir does not exist"},
-      {"colour.pcd out.pcd -svg old.svg -png old.svg",
-       "-svg and -png name the same file old.svg"},
+      {"colour.pcd out.pcd -svg r.svg -png r.png",
+       "-png and the PNG of -svg name the same file r.png"},
+      {"colour.pcd out.pcd -png old.svg", "-png needs a .png file (got 'old.svg')."},
       {"colour.pcd colour.pcd",
        "refusing to overwrite the input file colour.pcd (output)"},
       {"colour.pcd out.pcd -memory 0.000001", "Region growing failed (see above)"},
@@ -404,8 +409,9 @@ TEST_F (BadInputMatrix, BadOutputs)
        "cannot write nodir/out.pcd: the folder nodir does not exist"},
       {"plain.pcd out.pcd -fill nodir/f.pcd",
        "cannot write nodir/f.pcd: the folder nodir does not exist"},
-      {"plain.pcd out.pcd -csv old.svg -svg old.svg",
-       "-csv and -svg name the same file old.svg"},
+      {"plain.pcd out.pcd -fill out.pcd",
+       "output and -fill name the same file out.pcd"},
+      {"plain.pcd out.pcd -csv old.svg", "-csv needs a .csv file (got 'old.svg')."},
       {"plain.pcd out.pcd -fill plain.pcd",
        "refusing to overwrite the input file plain.pcd (-fill)"},
       {"plain.pcd plain.pcd",

@@ -121,6 +121,14 @@ struct ToolArgument {
   std::string extension;
 };
 
+/** \brief Requires \a path, the value of option \a option ("" when it is not given),
+ * to end in \a extension (".svg").
+ * \throws pcl::BadArgumentException "-svg needs a .svg file (got 'x.txt')." */
+void
+checkOptionExtension (const std::string& option,
+                      const std::string& path,
+                      const std::string& extension);
+
 /** \brief Checks the positional arguments \a arguments (of ToolCommandLine::parse())
  * against the \a expected ones: as many, each file with its extension.
  * \throws pcl::BadArgumentException saying what is expected */
