@@ -27,6 +27,9 @@ TEST (SystemMemory, UsableMemoryIsAtMostThePhysicalMemory)
 // child process, whose limit goes with it.
 TEST (SystemMemory, DefaultLimitFollowsTheAddressSpaceLimit)
 {
+#ifdef __SANITIZE_ADDRESS__
+  GTEST_SKIP() << "the address sanitizer reserves more address space than the limit";
+#endif
   constexpr std::size_t address_space = std::size_t{3} << 30;
   if (physicalMemoryBytes() <= address_space)
     GTEST_SKIP() << "this machine has at most 3 GiB of memory";
