@@ -32,22 +32,32 @@ checkOptionalLength (double value,
   return false;
 }
 
-/** \brief Warns (PCL_WARN naming the class \a class_name) when pcl::Feature's search
- * settings were given: \a search_radius (setRadiusSearch()), \a k (setKSearch()) or
- * a search tree (setSearchMethod()). The feature classes of this library build
- * their own complex, of the radius set by their setRadius(), and a PCL user who set
- * these as for pcl::BoundaryEstimation would otherwise not know they were ignored. */
-inline void
-warnUnusedFeatureSearch (const std::string& class_name,
-                         double search_radius,
-                         int k,
-                         bool has_search_tree)
+/** \brief The input check both feature classes' initCompute() start with: false,
+ * after a PCL_ERROR naming the class \a class_name, when there is no input
+ * (\a has_input: what pcl::PCLBase::initCompute() returned); else true, after a
+ * PCL_WARN when pcl::Feature's search settings were given: \a search_radius
+ * (setRadiusSearch()), \a k (setKSearch()) or a search tree (setSearchMethod()).
+ * The classes build their own complex, of the radius set by their setRadius(), and a
+ * PCL user who set these as for pcl::BoundaryEstimation would otherwise not know
+ * they were ignored. */
+inline bool
+checkFeatureInput (bool has_input,
+                   const std::string& class_name,
+                   double search_radius,
+                   int k,
+                   bool has_search_tree)
 {
+  if (!has_input) {
+    PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
+               class_name.c_str());
+    return false;
+  }
   if (search_radius != 0.0 || k != 0 || has_search_tree)
     PCL_WARN ("[pcl::tda::%s::compute] setRadiusSearch(), setKSearch() and "
               "setSearchMethod() are not used: the complex's radius is setRadius() "
               "(0: chosen from the point spacing).\n",
               class_name.c_str());
+  return true;
 }
 
 } // namespace tda

@@ -28,13 +28,12 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
   complex_ = FilteredComplex();
   search_counts_ = SearchCounts();
   used_radius_ = used_persistence_radius_ = 0.0;
-  if (!pcl::PCLBase<PointInT>::initCompute()) {
-    PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
-               getClassName().c_str());
+  if (!checkFeatureInput (pcl::PCLBase<PointInT>::initCompute(),
+                          getClassName(),
+                          this->search_radius_,
+                          this->k_,
+                          this->tree_ != nullptr))
     return false;
-  }
-  warnUnusedFeatureSearch (
-      getClassName(), this->search_radius_, this->k_, this->tree_ != nullptr);
   if (!indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) ||
       !checkOptionalLength (radius_, getClassName(), "radius", "to choose it"))
     return false;

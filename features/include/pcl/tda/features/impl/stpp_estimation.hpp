@@ -21,13 +21,12 @@ STPPEstimation<PointInT, PointOutT>::initCompute()
   level_radii_.clear();
   level_diagrams_.clear();
   cloud_size_ = 0.0;
-  if (!pcl::PCLBase<PointInT>::initCompute()) {
-    PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
-               getClassName().c_str());
+  if (!checkFeatureInput (pcl::PCLBase<PointInT>::initCompute(),
+                          getClassName(),
+                          this->search_radius_,
+                          this->k_,
+                          this->tree_ != nullptr))
     return false;
-  }
-  warnUnusedFeatureSearch (
-      getClassName(), this->search_radius_, this->k_, this->tree_ != nullptr);
   return indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) &&
          checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
 }
