@@ -15,6 +15,7 @@
 #include <pcl/tda/common/persistence_plots.h>
 #include <pcl/tda/common/phat_io.h>
 #include <pcl/tda/common/progress_bar.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/gpu/vietoris_rips_builder.h>
 #include <pcl/tda/search/clique_persistence.h>
 #include <pcl/tda/search/radius_edges.h>
@@ -40,7 +41,7 @@ struct Options {
   double radius = 0.0;
   long dimension = 1;
   double leaf = 0.0;
-  double memory_mib = 0.0;
+  std::size_t memory_limit = pcl::tda::defaultMemoryLimit();
   bool json = false;
   bool gpu = false;
   bool png = false;
@@ -109,8 +110,7 @@ parseOptions (int argc, char** argv, Options& options)
       "-leaf",
       options.leaf,
       pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
-  command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
+  command_line.addMemory ("-memory", options.memory_limit);
   std::string engine_name = pcl::tda::engineName (options.engine);
   command_line.addText ("-engine", engine_name);
   command_line.addText ("-export-phat", options.phat_matrix);
@@ -176,8 +176,7 @@ buildComplex (Builder& builder,
   // The default engine goes through the triangles it does not list: they are refused
   // over -memory as the listed ones are (a complete graph's ran for hours).
   builder.setTrianglesInMemoryLimit (triangleFree (options));
-  if (options.memory_mib > 0.0)
-    builder.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
+  builder.setMemoryLimit (options.memory_limit);
   pcl::tda::ProgressBar building ("  building");
   builder.setProgressCallback ([&building] (std::size_t done, std::size_t total) {
     building.update (done, total);

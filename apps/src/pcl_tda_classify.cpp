@@ -137,7 +137,7 @@ computeDescriptors (const pcl::tda::ViewManifest& manifest,
     paths.push_back (view.path);
   }
   std::vector<pcl::tda::DescribedFile> described =
-      pcl::tda::describeViewFiles (files, paths, names, 0.0, "  views");
+      pcl::tda::describeViewFiles (files, paths, names, {}, "  views");
   computed.clear();
   for (std::size_t i = 0; i < described.size(); ++i) {
     if (!described[i].error.empty()) {

@@ -12,6 +12,7 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/persistence_plots.h>
 #include <pcl/tda/common/progress_bar.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/surface/hole_filling.h>
 #include <pcl/exceptions.h>
@@ -36,7 +37,7 @@ struct Options {
   double radius = 0.0;
   double min_hole_radius = 0.0;
   long max_cycle = 0;
-  double memory_mib = 0.0;
+  std::size_t memory_limit = pcl::tda::defaultMemoryLimit();
 };
 
 void
@@ -97,8 +98,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addText ("-csv", options.csv);
   command_line.addText ("-svg", options.barcode_svg);
   command_line.addText ("-png", options.picture_png);
-  command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
+  command_line.addMemory ("-memory", options.memory_limit);
   const std::vector<std::string> files = command_line.parse (argc, argv);
   pcl::tda::checkArguments (files, {{"input", ".pcd"}, {"output", ".pcd"}});
   options.input = files[0];
@@ -187,9 +187,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   estimation.setRadius (options.radius);
   estimation.setMinHoleRadius (options.min_hole_radius);
   estimation.setMaxCycleLength (static_cast<std::size_t> (options.max_cycle));
-  if (options.memory_mib > 0.0)
-    estimation.setMemoryLimit (
-        static_cast<std::size_t> (options.memory_mib * 1048576.0));
+  estimation.setMemoryLimit (options.memory_limit);
   console.beginStep ("Finding holes");
   pcl::PointCloud<pcl::Boundary> flags;
   {

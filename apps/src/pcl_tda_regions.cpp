@@ -14,6 +14,7 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/persistence_plots.h>
 #include <pcl/tda/common/progress_bar.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
@@ -35,7 +36,7 @@ namespace {
 struct Options {
   std::string input, output, barcode_svg, picture_png;
   RegionSettings settings;
-  double memory_mib = 0.0;
+  std::size_t memory_limit = pcl::tda::defaultMemoryLimit();
 };
 
 void
@@ -116,8 +117,7 @@ parseOptions (int argc, char** argv, Options& options)
       "-angle", settings.angle, pcl::tda::NumberRange::above (0.0, 90.0));
   command_line.addSwitch ("-no-normals", no_normals);
   command_line.addInteger ("-min", min_size, 1, std::numeric_limits<int>::max());
-  command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
+  command_line.addMemory ("-memory", options.memory_limit);
   command_line.addText ("-svg", options.barcode_svg);
   command_line.addText ("-png", options.picture_png);
   const std::vector<std::string> files = command_line.parse (argc, argv);
@@ -252,8 +252,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   ToolRegionGrowing growing;
   growing.setInputCloud (cloud);
   pcl::tda::configureRegionGrowing (growing, settings, radius, normals);
-  if (options.memory_mib > 0.0)
-    growing.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
+  growing.setMemoryLimit (options.memory_limit);
 
   console.beginStep ("Growing regions");
   std::vector<pcl::PointIndices> regions;

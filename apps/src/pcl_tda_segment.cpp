@@ -12,6 +12,7 @@
 #include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/persistence_plots.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/segmentation/persistent_euclidean_cluster_extraction.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
@@ -36,7 +37,7 @@ struct Options {
   bool automatic = false;
   double piece_ratio = pcl::tda::PersistentEuclideanClusterExtraction<
       pcl::PointXYZ>::DEFAULT_PIECE_RATIO;
-  double memory_mib = 0.0;
+  std::size_t memory_limit = pcl::tda::defaultMemoryLimit();
   bool png = false;
 };
 
@@ -99,8 +100,7 @@ parseOptions (int argc, char** argv, Options& options)
       "-leaf",
       options.preprocessing.leaf,
       pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
-  command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
+  command_line.addMemory ("-memory", options.memory_limit);
   command_line.addText ("-svg", options.barcode_svg);
   command_line.addSwitch ("-png", options.png);
   const std::vector<std::string> files = command_line.parse (argc, argv);
@@ -161,9 +161,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   extraction.setAutoPieceRatio (options.piece_ratio);
   // The automatic distance never goes below the voxel grid's spacing.
   extraction.setAutoMinDistance (options.preprocessing.leaf);
-  if (options.memory_mib > 0.0)
-    extraction.setMemoryLimit (
-        static_cast<std::size_t> (options.memory_mib * 1048576.0));
+  extraction.setMemoryLimit (options.memory_limit);
   std::vector<pcl::PointIndices> clusters;
   extraction.extract (clusters);
   if (extraction.getPersistenceDiagram().empty()) {

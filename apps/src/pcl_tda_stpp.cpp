@@ -10,6 +10,7 @@
 #include <pcl/tda/apps/view_files.h>
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/exceptions.h>
 
 #include <omp.h>
@@ -45,6 +46,9 @@ printHelp (const char* program)
   print_info ("    -radius R      = radius of STPP's level 0 or of the covariance's "
               "filtration (default:\n                     chosen from each cloud's "
               "spacing)\n");
+  print_info ("    -memory M      = refuse complexes over M MiB, shared by the files "
+              "described at\n                     once (default: half of the "
+              "memory)\n");
   print_info ("    -threads N     = threads (default: all)\n");
 }
 
@@ -52,6 +56,7 @@ struct Options {
   std::string output, list, descriptor = "stpp";
   std::vector<std::string> inputs;
   double radius = 0.0;
+  std::size_t memory_limit = pcl::tda::defaultMemoryLimit();
   long threads = 0;
 };
 
@@ -81,6 +86,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addText ("-descriptor", options.descriptor);
   command_line.addNumber (
       "-radius", options.radius, pcl::tda::NumberRange::above (0.0));
+  command_line.addMemory ("-memory", options.memory_limit);
   command_line.addInteger ("-threads", options.threads, 1, 1024);
   const std::vector<std::string> arguments = command_line.parse (argc, argv);
   if (arguments.empty())
@@ -118,8 +124,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                      std::to_string (options.inputs.size()) + " files by " +
                          options.descriptor + ", " +
                          std::to_string (omp_get_max_threads()) + " threads");
+  pcl::tda::TopologicalSettings topological;
+  topological.radius = options.radius;
+  topological.memory_limit = options.memory_limit;
   const std::vector<pcl::tda::DescribedFile> described = pcl::tda::describeViewFiles (
-      options.inputs, options.inputs, {options.descriptor}, options.radius, "  files");
+      options.inputs, options.inputs, {options.descriptor}, topological, "  files");
   std::size_t failed = 0, size = 0;
   for (std::size_t i = 0; i < described.size(); ++i) {
     const std::string& error = described[i].error.empty()

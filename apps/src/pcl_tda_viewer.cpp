@@ -19,6 +19,7 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/persistence_engines.h>
 #include <pcl/tda/common/progress_bar.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/visualization/pcl_visualizer.h>
 #include <pcl/exceptions.h>
@@ -49,7 +50,8 @@ enum class Mode { BARCODE, CLUSTERS, REGIONS, HOLES };
 struct Options {
   std::string input, fill, screenshot, camera;
   Mode mode = Mode::BARCODE;
-  double radius = 0.0, at = 0.0, leaf = 0.0, memory_mib = 0.0;
+  double radius = 0.0, at = 0.0, leaf = 0.0;
+  std::size_t memory_limit = pcl::tda::defaultMemoryLimit();
   /** Window size from -size; 0: the default. */
   int width = 0, height = 0;
 };
@@ -145,8 +147,7 @@ parseOptions (int argc, char** argv, Options& options)
       "-leaf",
       options.leaf,
       pcl::tda::NumberRange::atLeast (0.0, std::numeric_limits<float>::max()));
-  command_line.addNumber (
-      "-memory", options.memory_mib, pcl::tda::NumberRange::above (0.0, 1e12));
+  command_line.addMemory ("-memory", options.memory_limit);
   command_line.addText ("-fill", options.fill);
   command_line.addText ("-screenshot", options.screenshot);
   command_line.addText ("-size", size);
@@ -269,8 +270,7 @@ loadBarcodeScene (const Options& options, pcl::tda::ToolConsole& console, Scene&
   pcl::tda::VietorisRipsBuilder<pcl::PointXYZ> builder;
   builder.setInputCloud (scene.points);
   builder.setRadius (options.radius);
-  if (options.memory_mib > 0.0)
-    builder.setMemoryLimit (static_cast<std::size_t> (options.memory_mib * 1048576.0));
+  builder.setMemoryLimit (options.memory_limit);
   pcl::tda::FilteredComplex complex;
   {
     pcl::tda::ProgressBar building ("  building");

@@ -45,6 +45,22 @@ refuseValue (const std::string& name,
                                  << "'.");
 }
 
+/** The largest value of a memory option, in MiB (a million TiB). */
+constexpr double MAX_MEMORY_MIB = 1e12;
+
+/** The number \a text spells, checked to be in \a range.
+ * \throws pcl::BadArgumentException naming option \a name when it is not */
+double
+numberIn (const NumberRange& range, const std::string& name, const std::string& text)
+{
+  const std::optional<double> value = parseWholeNumber (text);
+  if (!value || *value < range.minimum ||
+      (range.above_minimum && *value == range.minimum) || *value > range.maximum ||
+      (range.below_maximum && *value == range.maximum))
+    refuseValue (name, describe (range), text);
+  return *value;
+}
+
 /** Whether strtod or strtol, which skip leading spaces and stop at the first
  * character they cannot read, read all of \a text: a whole number has neither. */
 bool
@@ -82,6 +98,13 @@ ToolCommandLine::addInteger (const std::string& name,
                              long maximum)
 {
   options_[name] = Option{&value, {}, minimum, maximum, false};
+}
+
+void
+ToolCommandLine::addMemory (const std::string& name, std::size_t& bytes)
+{
+  options_[name] =
+      Option{&bytes, NumberRange::above (0.0, MAX_MEMORY_MIB), 0, 0, false};
 }
 
 void
@@ -125,15 +148,11 @@ ToolCommandLine::store (const std::string& name,
                         const Option& option,
                         const std::string& text) const
 {
-  if (auto* number = std::get_if<double*> (&option.value)) {
-    const std::optional<double> value = parseWholeNumber (text);
-    const NumberRange& range = option.range;
-    if (!value || *value < range.minimum ||
-        (range.above_minimum && *value == range.minimum) || *value > range.maximum ||
-        (range.below_maximum && *value == range.maximum))
-      refuseValue (name, describe (range), text);
-    **number = *value;
-  }
+  if (auto* number = std::get_if<double*> (&option.value))
+    **number = numberIn (option.range, name, text);
+  else if (auto* bytes = std::get_if<std::size_t*> (&option.value))
+    **bytes =
+        static_cast<std::size_t> (numberIn (option.range, name, text) * 1048576.0);
   else if (auto* integer = std::get_if<long*> (&option.value)) {
     const std::optional<long> value = parseWholeInteger (text);
     if (!value || *value < option.minimum || *value > option.maximum)

@@ -57,14 +57,23 @@ struct ViewInput {
   /** Why the view has no normals, when it has none. */
   std::string normal_failure;
   std::uint64_t seed = 0;
-  /** The radius of STPP's level 0 and of the covariance's filtration (0: theirs). */
-  double topological_radius = 0.0;
+  TopologicalSettings topological;
 };
 
 [[noreturn]] void
 fail (const std::string& reason)
 {
   PCL_THROW_EXCEPTION (pcl::ComputeFailedException, reason);
+}
+
+/** Fails for the topological descriptor \a name, which gave no output. */
+[[noreturn]] void
+failTopological (const std::string& name)
+{
+  fail (name + " gave no signature (fewer than " +
+        std::to_string (SURFACE_SPACING_NEIGHBORS + 1) +
+        " distinct finite points, or a complex over the memory limit: a smaller "
+        "-radius or a larger -memory)");
 }
 
 /** Estimates the normals of \a input (pcl::NormalEstimation) and keeps the points
@@ -191,15 +200,13 @@ stpp (const ViewInput& input, STPPHomology homology)
   STPPEstimation<pcl::PointXYZ, STPPSignature> estimation;
   estimation.setInputCloud (input.points);
   estimation.setHomology (homology);
-  estimation.setRadius (input.topological_radius);
+  estimation.setRadius (input.topological.radius);
+  estimation.setMemoryLimit (input.topological.memory_limit);
   estimation.setNumberOfThreads (1); // the views are computed in parallel
   pcl::PointCloud<STPPSignature> output;
   estimation.compute (output);
   if (output.size() != 1)
-    fail ("STPP gave no signature (fewer than " +
-          std::to_string (SURFACE_SPACING_NEIGHBORS + 1) +
-          " distinct finite points, or a complex over the memory limit, half of the "
-          "usable memory: a smaller -radius)");
+    failTopological ("STPP");
   return stppSignatureValues (output[0], homology);
 }
 
@@ -210,10 +217,13 @@ covariance (const ViewInput& input)
       estimation;
   estimation.setInputCloud (input.colored_surface);
   estimation.setInputNormals (input.normals);
-  estimation.setRadius (input.topological_radius);
+  estimation.setRadius (input.topological.radius);
+  estimation.setMemoryLimit (input.topological.memory_limit);
   estimation.setNumberOfThreads (1); // the views are computed in parallel
   pcl::PointCloud<CovarianceSignature> output;
   estimation.compute (output);
+  if (output.size() != 1)
+    failTopological ("The topological covariance descriptor");
   return singleHistogram (output, "covariance");
 }
 
@@ -287,11 +297,11 @@ std::vector<ViewDescriptor>
 computeViewDescriptors (const pcl::PointCloud<pcl::PointXYZRGB>& view,
                         const std::vector<std::string>& names,
                         std::uint64_t seed,
-                        double topological_radius)
+                        const TopologicalSettings& topological)
 {
   ViewInput input;
   input.seed = seed;
-  input.topological_radius = topological_radius;
+  input.topological = topological;
   input.colored_points.reset (new ColorCloud);
   for (const auto& point : view)
     if (pcl::isXYZFinite (point))

@@ -6,6 +6,8 @@
 #include <pcl/tda/search/parallel_progress.h>
 #include <pcl/point_types.h>
 
+#include <omp.h>
+
 #include <exception>
 
 namespace pcl {
@@ -24,12 +26,14 @@ std::vector<DescribedFile>
 describeViewFiles (const std::vector<std::string>& files,
                    const std::vector<std::string>& names_for_seeds,
                    const std::vector<std::string>& names,
-                   double topological_radius,
+                   const TopologicalSettings& topological,
                    const std::string& label)
 {
   for (const std::string& name : names)
     if (!isViewDescriptor (name))
       PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Unknown descriptor " << name);
+  TopologicalSettings per_view = topological;
+  per_view.memory_limit /= static_cast<std::size_t> (omp_get_max_threads());
   std::vector<DescribedFile> described (files.size());
   const pcl::console::VERBOSITY_LEVEL verbosity = pcl::console::getVerbosityLevel();
   pcl::console::setVerbosityLevel (pcl::console::L_ALWAYS);
@@ -45,7 +49,7 @@ describeViewFiles (const std::vector<std::string>& files,
         pcl::PointCloud<pcl::PointXYZRGB> cloud;
         loadPointCloudFile (files[i], cloud);
         described[i].descriptors = computeViewDescriptors (
-            cloud, names, viewSeed (names_for_seeds[i]), topological_radius);
+            cloud, names, viewSeed (names_for_seeds[i]), per_view);
       }
       catch (const std::exception& error) {
         described[i].error = errorMessage (error);

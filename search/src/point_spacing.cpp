@@ -3,21 +3,39 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 namespace pcl {
 namespace tda {
 
 namespace {
 
-/** Per query of \a queries, its distance to the \a k -th nearest point of \a tree at a
- * positive distance (so that duplicates of the query do not count), or 0 where
+/** The power of two by which distances are measured (powerOfTwoScale() of the
+ * largest coordinate magnitude of \a points and \a queries). */
+double
+coordinateScale (const std::vector<float>& points, const std::vector<float>& queries)
+{
+  float largest = 0.0f;
+  for (const std::vector<float>* values : {&points, &queries})
+    for (const float value : *values)
+      largest = std::max (largest, std::abs (value));
+  return powerOfTwoScale (largest);
+}
+
+/** Per query of \a queries, its distance to the \a k -th nearest point of \a points
+ * at a positive distance (so that duplicates of the query do not count), or 0 where
  * fewer than k such points exist among the nearest k + 8. */
 std::vector<double>
-kthNeighborDistances (const NearestNeighbors& tree,
+kthNeighborDistances (std::vector<float> points,
                       std::vector<float> queries,
                       std::size_t k,
                       unsigned int threads)
 {
+  const double scale = coordinateScale (points, queries);
+  for (std::vector<float>* values : {&points, &queries})
+    for (float& value : *values)
+      value = static_cast<float> (value / scale);
+  const NearestNeighbors tree (std::move (points));
   const std::size_t num_queries = queries.size() / 3;
   const std::size_t wanted = std::min (k + 8, tree.size());
   std::vector<std::uint32_t> neighbors;
@@ -29,7 +47,7 @@ kthNeighborDistances (const NearestNeighbors& tree,
     const auto first =
         std::find_if (row, row + wanted, [] (float d) { return d > 0.0f; });
     if (static_cast<std::size_t> (row + wanted - first) >= k)
-      distances[q] = std::sqrt (static_cast<double> (*(first + (k - 1))));
+      distances[q] = scale * std::sqrt (static_cast<double> (*(first + (k - 1))));
   }
   return distances;
 }
@@ -50,8 +68,8 @@ sortedPointSpacing (std::vector<float> xyz,
   std::vector<float> samples;
   for (std::size_t i = 0; i < num_points; i += stride)
     samples.insert (samples.end(), &xyz[3 * i], &xyz[3 * i] + 3);
-  std::vector<double> spacings = kthNeighborDistances (
-      NearestNeighbors (std::move (xyz)), std::move (samples), k, threads);
+  std::vector<double> spacings =
+      kthNeighborDistances (std::move (xyz), std::move (samples), k, threads);
   spacings.erase (std::remove (spacings.begin(), spacings.end(), 0.0), spacings.end());
   if (spacings.empty())
     return 0.0;
@@ -71,7 +89,7 @@ localSurfaceSpacings (const std::vector<Point3d>& points,
   if (points.size() < 2)
     return std::vector<double> (queries.size(), 0.0);
   std::vector<double> spacings =
-      kthNeighborDistances (NearestNeighbors (floatCoordinates (points)),
+      kthNeighborDistances (floatCoordinates (points),
                             floatCoordinates (points, queries),
                             SURFACE_SPACING_NEIGHBORS,
                             threads);

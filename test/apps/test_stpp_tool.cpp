@@ -14,6 +14,7 @@
 #include "tool_runner.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -154,6 +155,30 @@ TEST (STPPTool, SkipsAFileThatFailsAndExitsNonZero)
   EXPECT_FALSE (exists (none));
 }
 
+TEST (STPPTool, RefusesComplexesOverTheMemoryLimit)
+{
+  // The mug's complex at radius 1 cm takes a few MiB: refused at -memory 1, by STPP
+  // and by the covariance descriptor, naming -memory; described at -memory 8.
+  const std::string folder = pcl::tda::test::temporaryFolder ("stpp_tool");
+  const std::vector<std::string> paths = writeViews (folder);
+  const std::string csv = folder + "/out.csv";
+  for (const std::string descriptor : {"stpp", "covariance"}) {
+    const std::string arguments =
+        csv + " " + paths[0] + " -radius 0.01 -threads 1 -descriptor " + descriptor;
+    const RunResult refused = runTool (arguments + " -memory 1");
+    EXPECT_EQ (refused.exit_code, 1) << refused.output;
+    EXPECT_NE (refused.output.find ("over the memory limit: a smaller -radius or a "
+                                    "larger -memory"),
+               std::string::npos)
+        << refused.output;
+    EXPECT_FALSE (exists (csv));
+    const RunResult accepted = runTool (arguments + " -memory 8");
+    EXPECT_EQ (accepted.exit_code, 0) << accepted.output;
+    EXPECT_EQ (linesOf (csv).size(), 2u);
+    std::remove (csv.c_str());
+  }
+}
+
 TEST (STPPTool, RefusesBadInputAndWritesNothing)
 {
   const std::string folder = pcl::tda::test::temporaryFolder ("stpp_tool");
@@ -167,6 +192,8 @@ TEST (STPPTool, RefusesBadInputAndWritesNothing)
                                        csv + " " + paths[0] + " -radius -1",
                                        csv + " " + paths[0] + " -radius abc",
                                        csv + " " + paths[0] + " -threads 0",
+                                       csv + " " + paths[0] + " -memory 0",
+                                       csv + " " + paths[0] + " -memory abc",
                                        csv + " " + paths[0] + " -unknown 1",
                                        folder + "/out.txt " + paths[0],
                                        csv + " " + folder + "/x.ply",

@@ -44,6 +44,7 @@ contentOf (const std::string& path)
 struct Parsed {
   double radius = 0.0, leaf = 0.0;
   long dimension = 1;
+  std::size_t memory = 7; // bytes; kept when -memory is not given
   std::string svg;
   bool json = false;
   std::vector<std::string> files;
@@ -57,6 +58,7 @@ parse (const std::vector<std::string>& arguments, Parsed& parsed)
   command_line.addNumber ("-radius", parsed.radius, NumberRange::above (0.0), true);
   command_line.addNumber ("-leaf", parsed.leaf, NumberRange::atLeast (0.0));
   command_line.addInteger ("-dim", parsed.dimension, 0, 1);
+  command_line.addMemory ("-memory", parsed.memory);
   command_line.addText ("-svg", parsed.svg);
   command_line.addSwitch ("-json", parsed.json);
   std::vector<const char*> argv{"tool"};
@@ -95,6 +97,9 @@ TEST (ToolCommandLine, ParsesValuesSwitchesAndFiles)
   EXPECT_EQ (parsed.svg, "b.svg");
   EXPECT_TRUE (parsed.json);
   EXPECT_EQ (parsed.files, (std::vector<std::string>{"in.pcd", "out.csv"}));
+  EXPECT_EQ (parsed.memory, 7u);
+  ASSERT_EQ (parse ({"-radius", "1", "-memory", "1.5"}, parsed), "");
+  EXPECT_EQ (parsed.memory, 1572864u); // 1.5 MiB in bytes
 }
 
 TEST (ToolCommandLine, RefusesBadArgumentsNamingThem)
@@ -118,6 +123,12 @@ TEST (ToolCommandLine, RefusesBadArgumentsNamingThem)
        "Option -dim needs an integer from 0 to 1, not '2'."},
       {{"-radius", "1", "-dim", "99999999999999999999"},
        "Option -dim needs an integer from 0 to 1, not '99999999999999999999'."},
+      {{"-radius", "1", "-memory", "0"},
+       "Option -memory needs a number > 0 and <= 1e+12, not '0'."},
+      {{"-radius", "1", "-memory", "2e12"},
+       "Option -memory needs a number > 0 and <= 1e+12, not '2e12'."},
+      {{"-radius", "1", "-memory", "1G"},
+       "Option -memory needs a number > 0 and <= 1e+12, not '1G'."},
       {{"-radius", "1", "-svg"}, "Option -svg needs a value."},
       {{"-radius", "1", "-svg", "-json"}, "Option -svg needs a value, not '-json'."},
       {{"-radius", "1", "-foo"}, "Unknown option -foo (see -h)."},

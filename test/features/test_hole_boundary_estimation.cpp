@@ -355,6 +355,38 @@ TEST (HoleBoundaryEstimation, IndependentOfInputOrderAndThreads)
   }
 }
 
+TEST (HoleBoundaryEstimation, SameHolesInAnyUnit)
+{
+  // Scaled by a power of two (exact in float), from units where squared distances
+  // overflow float (2^90, about 1e27) to units where they underflow it (2^-90):
+  // the same flags and rims.
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 3, 0.1f);
+  const auto cloud = positionsOf (surface);
+  Estimation reference;
+  reference.setInputCloud (cloud);
+  pcl::PointCloud<pcl::Boundary> expected;
+  reference.compute (expected);
+  ASSERT_EQ (countHoles (reference.getHoles(), surface).matched, surface.holes.size());
+  for (const int exponent : {90, -90}) {
+    SCOPED_TRACE (::testing::Message() << "unit 2^" << exponent);
+    pcl::PointCloud<pcl::PointXYZ>::Ptr scaled (new pcl::PointCloud<pcl::PointXYZ>);
+    for (const auto& point : *cloud)
+      scaled->push_back (pcl::PointXYZ (std::ldexp (point.x, exponent),
+                                        std::ldexp (point.y, exponent),
+                                        std::ldexp (point.z, exponent)));
+    Estimation estimation;
+    estimation.setInputCloud (scaled);
+    pcl::PointCloud<pcl::Boundary> flags;
+    estimation.compute (flags);
+    ASSERT_EQ (flags.size(), expected.size());
+    for (std::size_t k = 0; k < flags.size(); ++k)
+      ASSERT_EQ (flags[k].boundary_point, expected[k].boundary_point) << k;
+    ASSERT_EQ (estimation.getHoles().size(), reference.getHoles().size());
+    for (std::size_t h = 0; h < reference.getHoles().size(); ++h)
+      EXPECT_EQ (estimation.getHoles()[h].rim, reference.getHoles()[h].rim);
+  }
+}
+
 TEST (HoleBoundaryEstimation, IndicesSubsetAndNonFinitePoints)
 {
   const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 2);

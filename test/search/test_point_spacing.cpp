@@ -1,7 +1,7 @@
 /** pointSpacing(): known values on regular samplings, non-finite points and
- * duplicates skipped, and the same value for any input order, also when only a
- * sample of the points is measured. localSurfaceSpacings(): the closed form on a
- * grid sampled at two densities. */
+ * duplicates skipped, the same value for any input order, also when only a
+ * sample of the points is measured, and in any unit (no float overflow).
+ * localSurfaceSpacings(): the closed form on a grid sampled at two densities. */
 #include <pcl/tda/search/point_spacing.h>
 #include <pcl/point_types.h>
 
@@ -73,6 +73,38 @@ TEST (PointSpacing, IndependentOfInputOrder)
             << "k " << k << " quantile " << quantile << " seed " << seed;
       }
     }
+}
+
+TEST (PointSpacing, ScalesWithTheCloudAtAnyUnit)
+{
+  // A cloud in units where its squared distances overflow (1e25: 1e50 > FLT_MAX) or
+  // underflow (1e-25: 1e-50 < FLT_MIN) in float has the spacing times the unit.
+  const float step = 0.01f;
+  const Cloud cloud = grid (30, step);
+  const double spacing = pcl::tda::pointSpacing (cloud);
+  const double surface = pcl::tda::surfaceSpacing (cloud);
+  std::vector<pcl::tda::Point3d> points;
+  for (const auto& point : cloud)
+    points.push_back ({point.x, point.y, point.z});
+  const std::uint32_t inside = 15 * 30 + 15;
+  const double local = pcl::tda::localSurfaceSpacings (points, {inside})[0];
+  for (const float unit : {1e25f, 1e-25f, 1e35f, 1e-35f}) {
+    Cloud scaled = cloud;
+    std::vector<pcl::tda::Point3d> scaled_points = points;
+    for (auto& point : scaled)
+      point.getVector3fMap() *= unit;
+    for (auto& point : scaled_points)
+      for (double& coordinate : point)
+        coordinate *= unit;
+    EXPECT_NEAR (pcl::tda::pointSpacing (scaled) / unit, spacing, 1e-6 * spacing)
+        << unit;
+    EXPECT_NEAR (pcl::tda::surfaceSpacing (scaled) / unit, surface, 1e-6 * surface)
+        << unit;
+    EXPECT_NEAR (pcl::tda::localSurfaceSpacings (scaled_points, {inside})[0] / unit,
+                 local,
+                 1e-6 * local)
+        << unit;
+  }
 }
 
 TEST (LocalSurfaceSpacings, FollowTheDensityAroundEachPoint)

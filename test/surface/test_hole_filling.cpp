@@ -163,6 +163,38 @@ TEST (HoleFilling, CentroidModeOnePointPerHoleAtItsCentre)
   }
 }
 
+TEST (HoleFilling, SameNewPointsInAnyUnit)
+{
+  // The cloud and its holes scaled by a power of two (exact in float), to units where
+  // float squared distances overflow (2^90) or underflow (2^-90): the same new
+  // points, scaled alike, up to float rounding.
+  const Detected detected = detect (HoleSurfaceKind::SPHERE, 2, 0.1f);
+  pcl::tda::HoleFilling<pcl::PointXYZ> filler;
+  filler.setInputCloud (detected.cloud);
+  filler.setHoles (detected.holes);
+  Cloud expected;
+  ASSERT_TRUE (filler.reconstruct (expected));
+  ASSERT_GT (expected.size(), detected.cloud->size());
+  for (const int exponent : {90, -90}) {
+    SCOPED_TRACE (::testing::Message() << "unit 2^" << exponent);
+    const float unit = std::ldexp (1.0f, exponent);
+    Cloud::Ptr scaled (new Cloud);
+    for (const auto& p : *detected.cloud)
+      scaled->push_back (pcl::PointXYZ (p.x * unit, p.y * unit, p.z * unit));
+    pcl::tda::HoleFilling<pcl::PointXYZ> scaled_filler;
+    scaled_filler.setInputCloud (scaled);
+    scaled_filler.setHoles (detected.holes); // rims are indices: the same
+    Cloud filled;
+    ASSERT_TRUE (scaled_filler.reconstruct (filled));
+    ASSERT_EQ (filled.size(), expected.size());
+    for (std::size_t i = detected.cloud->size(); i < filled.size(); ++i)
+      EXPECT_LT (
+          (filled[i].getVector3fMap() / unit - expected[i].getVector3fMap()).norm(),
+          1e-6f)
+          << i;
+  }
+}
+
 TEST (HoleFilling, OtherFieldsCopiedFromTheNearestRimPoint)
 {
   const Detected detected = detect (HoleSurfaceKind::PLANE, 4);

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstddef>
 #include <limits>
 #include <map>
 #include <optional>
@@ -61,6 +62,12 @@ public:
   void
   addInteger (const std::string& name, long& value, long minimum, long maximum);
 
+  /** \brief Declares "-name M" for a memory size of M MiB (M > 0), written to
+   * \a bytes in bytes; \a bytes keeps its value (defaultMemoryLimit(), say) when
+   * the option is not given. */
+  void
+  addMemory (const std::string& name, std::size_t& bytes);
+
   /** \brief Declares "-name TEXT" (not empty), e.g. a file name. */
   void
   addText (const std::string& name, std::string& value);
@@ -85,7 +92,7 @@ public:
 private:
   /** One declared option and where its value goes. */
   struct Option {
-    std::variant<double*, long*, std::string*, bool*> value;
+    std::variant<double*, long*, std::size_t*, std::string*, bool*> value;
     NumberRange range;
     long minimum = 0, maximum = 0;
     bool required = false;

@@ -1,8 +1,10 @@
 #pragma once
 
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/point_cloud.h>
 #include <pcl/point_types.h>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -26,6 +28,16 @@ struct ViewDescriptor {
   /** \brief Milliseconds of the view's normals, when the descriptor needs them (the
    * normals are estimated once per view and counted in each such descriptor). */
   double normal_milliseconds = 0.0;
+};
+
+/** \brief The settings of the topological descriptors of a view ("stpp", "stpp0",
+ * "stpp1", "covariance"). */
+struct TopologicalSettings {
+  /** \brief The radius of STPP's level 0 and of the covariance's filtration
+   * (setRadius(); 0: chosen by them). */
+  double radius = 0.0;
+  /** \brief The largest complex, in bytes, one view may build (setMemoryLimit()). */
+  std::size_t memory_limit = defaultMemoryLimit();
 };
 
 /** \brief The global descriptors computeViewDescriptors() knows:
@@ -58,14 +70,13 @@ isViewDescriptor (const std::string& name);
  * uses the colours. A descriptor that
  * cannot be computed (too few points, PCL gives no histogram or non-finite values)
  * gets its failure, the others are computed all the same. Deterministic: \a seed
- * seeds ESF's sampling. \a topological_radius is the radius of STPP's level 0 and
- * of the covariance descriptor's filtration (setRadius(); 0: chosen by them).
+ * seeds ESF's sampling; \a topological sets the topological descriptors.
  * \throws pcl::BadArgumentException on an unknown name */
 std::vector<ViewDescriptor>
 computeViewDescriptors (const pcl::PointCloud<pcl::PointXYZRGB>& view,
                         const std::vector<std::string>& names,
                         std::uint64_t seed,
-                        double topological_radius = 0.0);
+                        const TopologicalSettings& topological = {});
 
 } // namespace tda
 } // namespace pcl

@@ -25,7 +25,9 @@ viewSeed (const std::string& name);
 /** \brief Reads every file of \a files (as pcl::PointXYZRGB: colour where the file
  * has one) and computes its descriptors \a names (computeViewDescriptors(), seeded
  * with viewSeed() of \a names_for_seeds[i]), in parallel over the files (OpenMP,
- * each file on one thread), with a progress bar labelled \a label. PCL's own
+ * each file on one thread), with a progress bar labelled \a label. The files
+ * described at once share \a topological's memory limit: each thread's view may
+ * build complexes of the limit divided by the number of threads. PCL's own
  * messages are silenced meanwhile (they come from all threads at once): every
  * failure is in the result.
  * \throws pcl::BadArgumentException on an unknown descriptor name */
@@ -33,7 +35,7 @@ std::vector<DescribedFile>
 describeViewFiles (const std::vector<std::string>& files,
                    const std::vector<std::string>& names_for_seeds,
                    const std::vector<std::string>& names,
-                   double topological_radius,
+                   const TopologicalSettings& topological,
                    const std::string& label);
 
 } // namespace tda

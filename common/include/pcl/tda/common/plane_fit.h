@@ -51,11 +51,13 @@ public:
   normal () const
   {
     const double n = static_cast<double> (count_);
-    const Eigen::Matrix3f covariance =
-        ((products_ - sum_ * sum_.transpose() / n) / n).cast<float>();
+    Eigen::Matrix3d covariance = (products_ - sum_ * sum_.transpose() / n) / n;
+    // Scaled by a power of two (the normal stays): in float, also the covariance of
+    // points in units where squares overflow or underflow.
+    covariance /= powerOfTwoScale (covariance.cwiseAbs().maxCoeff());
     float eigenvalue = 0.0f;
     Eigen::Vector3f normal;
-    pcl::eigen33 (covariance, eigenvalue, normal);
+    pcl::eigen33 (Eigen::Matrix3f (covariance.cast<float>()), eigenvalue, normal);
     normal.normalize();
     // eigen33 gives no vector when the smallest eigenvalue is double (points on a
     // line): any axis across the line is then a normal.

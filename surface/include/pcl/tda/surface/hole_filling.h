@@ -6,6 +6,7 @@
 #include <pcl/tda/features/projected_polygon.h>
 #include <pcl/pcl_base.h>
 #include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 
 #include <cstddef>
 #include <cstdint>
@@ -128,13 +129,25 @@ private:
   bool
   gridsFitMemory (double spacing) const;
 
+  /** \brief The input's positions divided by \a scale, a power of two
+   * (powerOfTwoScale() of their largest magnitude), in a k-d tree: its float
+   * distances neither overflow nor underflow, in any unit. */
+  struct ScaledSearch {
+    double scale = 1.0;
+    pcl::search::KdTree<pcl::PointXYZ> tree;
+  };
+
+  /** \brief Builds \a search over the input. */
+  void
+  buildScaledSearch (ScaledSearch& search) const;
+
   /** \brief The new points of one hole, appended to \a output. In SURFACE mode
-   * \a tree searches the input and \a taken (one 0 per input point, left all 0)
+   * \a search searches the input and \a taken (one 0 per input point, left all 0)
    * marks the surroundings already seen. */
   void
   fillHole (const HoleRim& hole,
             double spacing,
-            const pcl::search::KdTree<PointT>& tree,
+            const ScaledSearch& search,
             std::vector<std::uint8_t>& taken,
             pcl::PointCloud<PointT>& output) const;
 

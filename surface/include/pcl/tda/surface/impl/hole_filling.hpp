@@ -69,16 +69,16 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
   }
   output = *input_;
   // One search tree and one set of marks for all holes (SURFACE mode only).
-  pcl::search::KdTree<PointT> tree;
+  ScaledSearch search;
   std::vector<std::uint8_t> taken;
   if (mode_ == Mode::SURFACE && !holes_.empty()) {
-    tree.setInputCloud (input_);
+    buildScaledSearch (search);
     taken.assign (input_->size(), 0);
   }
   for (const HoleRim& hole : holes_) {
     const std::size_t before = output.size();
     if (hole.rim.size() >= 3)
-      fillHole (hole, spacing, tree, taken, output);
+      fillHole (hole, spacing, search, taken, output);
     new_point_counts_.push_back (output.size() - before);
   }
   output.width = static_cast<std::uint32_t> (output.size());
@@ -86,6 +86,26 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
   output.is_dense = input_->is_dense;
   deinitCompute();
   return true;
+}
+
+template <typename PointT>
+void
+HoleFilling<PointT>::buildScaledSearch (ScaledSearch& search) const
+{
+  double largest = 0.0;
+  for (const PointT& p : *input_)
+    if (pcl::isXYZFinite (p))
+      largest = std::max (
+          largest, static_cast<double> (p.getVector3fMap().cwiseAbs().maxCoeff()));
+  search.scale = powerOfTwoScale (largest);
+  pcl::PointCloud<pcl::PointXYZ>::Ptr scaled (new pcl::PointCloud<pcl::PointXYZ>);
+  scaled->reserve (input_->size());
+  for (const PointT& p : *input_)
+    scaled->push_back (pcl::PointXYZ (static_cast<float> (p.x / search.scale),
+                                      static_cast<float> (p.y / search.scale),
+                                      static_cast<float> (p.z / search.scale)));
+  scaled->is_dense = input_->is_dense;
+  search.tree.setInputCloud (scaled);
 }
 
 template <typename PointT>
@@ -146,7 +166,7 @@ template <typename PointT>
 void
 HoleFilling<PointT>::fillHole (const HoleRim& hole,
                                double spacing,
-                               const pcl::search::KdTree<PointT>& tree,
+                               const ScaledSearch& search,
                                std::vector<std::uint8_t>& taken,
                                pcl::PointCloud<PointT>& output) const
 {
@@ -188,8 +208,10 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
   pcl::Indices neighbors;
   std::vector<float> squared_distances;
   for (const SimplexIndex index : hole.rim) {
-    tree.radiusSearch (
-        (*input_)[index], SURROUNDING_SPACINGS * spacing, neighbors, squared_distances);
+    search.tree.radiusSearch (static_cast<pcl::index_t> (index),
+                              SURROUNDING_SPACINGS * spacing / search.scale,
+                              neighbors,
+                              squared_distances);
     for (const auto n : neighbors) {
       if (taken[n])
         continue;
@@ -204,28 +226,25 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
   }
   for (const auto n : surroundings)
     taken[n] = 0; // clean for the next hole
-  // The quadratic height field (a plane when there are too few points for it).
-  const int terms = around.size() >= 12 ? 6 : 3;
+  // The quadratic height field (a plane when there are too few points for it), in
+  // plane coordinates of spacings: its terms are of one size in any unit.
+  const Eigen::Index terms = around.size() >= 12 ? 6 : 3;
+  const auto monomials = [&] (const Eigen::Vector2d& position) {
+    const double u = position.x() / spacing, v = position.y() / spacing;
+    Eigen::Matrix<double, 6, 1> row;
+    row << 1.0, u, v, u * u, u * v, v * v;
+    return row;
+  };
   Eigen::MatrixXd design (around.size(), terms);
   Eigen::VectorXd values (around.size());
   for (std::size_t i = 0; i < around.size(); ++i) {
-    const double u = around[i].x(), v = around[i].y();
-    design (i, 0) = 1.0;
-    design (i, 1) = u;
-    design (i, 2) = v;
-    if (terms == 6) {
-      design (i, 3) = u * u;
-      design (i, 4) = u * v;
-      design (i, 5) = v * v;
-    }
-    values (i) = heights[i];
+    const auto row = static_cast<Eigen::Index> (i);
+    design.row (row) = monomials (around[i]).head (terms).transpose();
+    values (row) = heights[i];
   }
   const Eigen::VectorXd c = design.colPivHouseholderQr().solve (values);
-  const auto height = [&] (double u, double v) {
-    double h = c (0) + c (1) * u + c (2) * v;
-    if (terms == 6)
-      h += c (3) * u * u + c (4) * u * v + c (5) * v * v;
-    return h;
+  const auto height = [&] (const Eigen::Vector2d& position) {
+    return monomials (position).head (terms).dot (c);
   };
 
   // The nodes of a grid of one spacing inside the rim, away from every point.
@@ -241,8 +260,7 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
           gaps.distance (gx, gy) < MIN_GAP_SPACINGS * spacing)
         continue;
       append (polygon.centroid() + node.x() * polygon.axisU() +
-              node.y() * polygon.axisV() +
-              height (node.x(), node.y()) * polygon.normal());
+              node.y() * polygon.axisV() + height (node) * polygon.normal());
     }
 }
 
