@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <stdexcept>
 #include <vector>
 
 namespace pcl {
@@ -18,8 +19,9 @@ namespace test {
 
 /** Expects a Vietoris-Rips builder of type \a Builder to report the progress of a
  * build of \a cloud at radius \a radius in thousandths, never backwards, ending at
- * 1000, with and without triangles, and to build the same complex with a callback as
- * without; on one thread at least \a min_reports times. (Only OpenMP's master thread
+ * 1000, with and without triangles, to build the same complex with a callback as
+ * without, and to let a callback that throws cancel the build; on one thread at least
+ * \a min_reports times. (Only OpenMP's master thread
  * reports from the parallel loops: on a busy machine the other threads may do all of
  * their work, so the count is checked on one thread, where it does not depend on the
  * machine.) */
@@ -45,6 +47,20 @@ expectReportsProgress (const CloudPtr& cloud, double radius, std::size_t min_rep
         seen.push_back (done);
       });
       ASSERT_TRUE (builder.compute (reported));
+      // A callback that throws at any of its calls (a caller cancelling the build,
+      // also from inside a parallel pass): the exception reaches the caller. (On
+      // several threads, only the first call is sure to come.)
+      const std::size_t calls_sure = threads == 1 ? seen.size() : 1;
+      for (std::size_t k = 1; k <= calls_sure;
+           k += std::max<std::size_t> (1, calls_sure / 7)) {
+        std::size_t calls = 0;
+        builder.setProgressCallback ([&calls, k] (std::size_t, std::size_t) {
+          if (++calls == k)
+            throw std::runtime_error ("cancelled");
+        });
+        FilteredComplex cancelled;
+        EXPECT_THROW (builder.compute (cancelled), std::runtime_error) << "call " << k;
+      }
       omp_set_num_threads (default_threads);
       ASSERT_FALSE (seen.empty());
       if (threads == 1) {

@@ -3,6 +3,7 @@
 
 #include <pcl/console/print.h>
 #include <pcl/console/time.h>
+#include <pcl/tda/apps/coordinate_check.h>
 #include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
@@ -241,7 +242,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   Cloud::Ptr cloud (new Cloud);
   if (!console.loadInput (options.input, *cloud))
     return 1;
+  pcl::tda::checkToolCoordinates (*cloud, options.radius, "-radius");
   if (options.leaf > 0.0) {
+    pcl::tda::checkToolCoordinates (*cloud, options.leaf, "-leaf");
     try {
       cloud = pcl::tda::voxelGridFilter<pcl::PointXYZ> (cloud, options.leaf);
     }
@@ -273,6 +276,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     console.endLine(); // the builder said why
     print_error ("For a complex over the memory limit: set a larger one with -memory M "
                  "(MiB), or use a smaller -radius or a voxel grid (-leaf).\n");
+    const std::string coincident = pcl::tda::coincidentPointsAdvice (*cloud);
+    if (!coincident.empty())
+      print_error ("%s\n", coincident.c_str());
     return 1;
   }
   seconds.build = console.stepMilliseconds() / 1000.0;

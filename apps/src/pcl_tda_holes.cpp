@@ -5,6 +5,7 @@
 #include <pcl/common/io.h>
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/apps/coordinate_check.h>
 #include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
@@ -14,6 +15,7 @@
 #include <pcl/tda/common/progress_bar.h>
 #include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
+#include <pcl/tda/search/point_spacing.h>
 #include <pcl/tda/surface/hole_filling.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
@@ -181,6 +183,13 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   if (!blob.data.empty())
     pcl::fromPCLPointCloud2 (blob, *cloud);
   console.endStep (std::to_string (cloud->size()) + " points");
+  const double spacing_radius =
+      Estimation::AUTO_RADIUS_PER_SPACING * pcl::tda::surfaceSpacing (*cloud);
+  if (options.radius > 0.0)
+    pcl::tda::checkToolCoordinates (*cloud, options.radius, "-radius");
+  else if (spacing_radius > 0.0) // else the estimation says there are too few points
+    pcl::tda::checkToolCoordinates (
+        *cloud, spacing_radius, "the radius from the spacing");
 
   Estimation estimation;
   estimation.setInputCloud (cloud);
@@ -200,6 +209,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     console.error ("Hole detection failed (see above). For a complex over the memory "
                    "limit: set a larger one with -memory M (MiB), or a smaller "
                    "-radius; for a radius refused, the radius it advises.");
+    const std::string coincident = pcl::tda::coincidentPointsAdvice (*cloud);
+    if (!coincident.empty())
+      console.error (coincident);
     return 1;
   }
   const std::vector<pcl::tda::HoleRim>& holes = estimation.getHoles();

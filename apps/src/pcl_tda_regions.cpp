@@ -6,6 +6,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/apps/coordinate_check.h>
 #include <pcl/tda/apps/region_settings.h>
 #include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
@@ -238,10 +239,18 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   console.beginStep ("Radius");
   const double radius = pcl::tda::regionRadius (settings, *cloud);
   if (!(radius > 0.0)) {
-    console.error ("The cloud has fewer than two distinct finite points: no spacing "
-                   "to take the radius from. Give -radius.");
+    console.error ("The cloud has fewer than " +
+                   std::to_string (RegionSettings::SPACING_NEIGHBOR + 1) +
+                   " distinct finite points: no spacing to take the radius from (a "
+                   "point's distance to its " +
+                   std::to_string (RegionSettings::SPACING_NEIGHBOR) +
+                   "th nearest). Give -radius.");
     return 1;
   }
+  pcl::tda::checkToolCoordinates (
+      *cloud,
+      radius,
+      settings.radius > 0.0 ? "-radius" : "the radius from the spacing");
   std::ostringstream chosen;
   chosen << radius << (settings.radius > 0.0 ? " (given)" : " (from the spacing)");
   console.endStep (chosen.str());
@@ -266,6 +275,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     console.error ("Region growing failed (see above). For a neighbour graph over the "
                    "memory limit: set a larger one with -memory M (MiB), or a smaller "
                    "-radius.");
+    const std::string coincident = pcl::tda::coincidentPointsAdvice (*cloud);
+    if (!coincident.empty())
+      console.error (coincident);
     return 1;
   }
   std::ostringstream grown;

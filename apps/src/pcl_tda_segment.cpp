@@ -5,6 +5,7 @@
 
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/apps/coordinate_check.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
 #include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
@@ -131,6 +132,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   Cloud::Ptr cloud (new Cloud);
   if (!console.loadInput (options.input, *cloud))
     return 1;
+  pcl::tda::checkToolCoordinates (*cloud, options.radius, "-radius");
+  if (options.preprocessing.leaf > 0.0)
+    pcl::tda::checkToolCoordinates (*cloud, options.preprocessing.leaf, "-leaf");
   console.endStep (std::to_string (cloud->size()) + " points" +
                    (cloud->isOrganized() ? " (organized)" : ""));
 

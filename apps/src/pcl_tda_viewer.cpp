@@ -8,6 +8,7 @@
 #include <pcl/tda/apps/barcode_overlay.h>
 #include <pcl/tda/apps/cloud_files.h>
 #include <pcl/tda/apps/cloud_picture.h>
+#include <pcl/tda/apps/coordinate_check.h>
 #include <pcl/tda/apps/display_connection.h>
 #include <pcl/tda/apps/filtration_at_radius.h>
 #include <pcl/tda/apps/labelled_cloud.h>
@@ -244,15 +245,19 @@ atRadius (Scene& scene, double radius)
   scene.text = countsText (*scene.filtration, radius);
 }
 
-/** The -barcode mode: the complex of the cloud up to -radius and its persistence.
- * \return false, with the reason printed, when it cannot be built */
+/** The points of the -barcode mode (after -leaf).
+ * \return false, with the reason printed, when they cannot be read
+ * \throws pcl::BadArgumentException when their coordinates do not resolve -radius or
+ * -leaf (checkToolCoordinates()) */
 bool
-loadBarcodeScene (const Options& options, pcl::tda::ToolConsole& console, Scene& scene)
+loadBarcodePoints (const Options& options, pcl::tda::ToolConsole& console, Scene& scene)
 {
   scene.points.reset (new pcl::PointCloud<pcl::PointXYZ>);
   if (!console.loadInput (options.input, *scene.points))
     return false;
+  pcl::tda::checkToolCoordinates (*scene.points, options.radius, "-radius");
   if (options.leaf > 0.0) {
+    pcl::tda::checkToolCoordinates (*scene.points, options.leaf, "-leaf");
     try {
       scene.points =
           pcl::tda::voxelGridFilter<pcl::PointXYZ> (scene.points, options.leaf);
@@ -263,7 +268,14 @@ loadBarcodeScene (const Options& options, pcl::tda::ToolConsole& console, Scene&
     }
   }
   console.endStep (std::to_string (scene.points->size()) + " points");
+  return true;
+}
 
+/** The -barcode mode's complex of the points up to -radius and its persistence.
+ * \return false, with the reason printed, when it cannot be built */
+bool
+computeBarcode (const Options& options, pcl::tda::ToolConsole& console, Scene& scene)
+{
   std::ostringstream radius;
   radius << options.radius;
   console.beginStep ("Computing the persistence up to radius", radius.str());
@@ -281,6 +293,9 @@ loadBarcodeScene (const Options& options, pcl::tda::ToolConsole& console, Scene&
       console.error (
           "Set a larger limit with -memory M (MiB), or use a smaller -radius "
           "or a voxel grid (-leaf).");
+      const std::string coincident = pcl::tda::coincidentPointsAdvice (*scene.points);
+      if (!coincident.empty())
+        console.error (coincident);
       return false;
     }
   }
@@ -574,7 +589,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   pcl::tda::ToolOutputs outputs (std::vector<std::string>{options.input, options.fill},
                                  {{"-screenshot", options.screenshot}});
   Scene scene;
-  if (!(options.mode == Mode::BARCODE ? loadBarcodeScene (options, console, scene)
+  // The files are checked first, then the display, then the persistence computed.
+  if (!(options.mode == Mode::BARCODE ? loadBarcodePoints (options, console, scene)
                                       : loadLabelScene (options, console, scene)))
     return 1;
   const pcl::tda::DisplayConnection display;
@@ -585,6 +601,8 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                    "xvfb-run -a pcl_tda_viewer ... -screenshot out.png");
     return 1;
   }
+  if (options.mode == Mode::BARCODE && !computeBarcode (options, console, scene))
+    return 1;
   return show (options, outputs, console, scene);
 }
 

@@ -31,9 +31,13 @@ logCovarianceVector (const CovarianceFeatures& features,
       (centred.transpose() * centred) / static_cast<double> (features.rows() - 1);
   covariance += regularization * Matrix::Identity();
   const Eigen::SelfAdjointEigenSolver<Matrix> solver (covariance);
-  const Matrix logarithm = solver.eigenvectors() *
-                           solver.eigenvalues().array().log().matrix().asDiagonal() *
-                           solver.eigenvectors().transpose();
+  // Its eigenvalues are at least the regularization; computed, those of constant
+  // features may fall below it (even below 0) by the solver's rounding, about 1e-16
+  // times the largest (positions in millimetres vary by 1e6 and more): clamped.
+  const Matrix logarithm =
+      solver.eigenvectors() *
+      solver.eigenvalues().array().max (regularization).log().matrix().asDiagonal() *
+      solver.eigenvectors().transpose();
   std::size_t k = 0;
   for (std::size_t i = 0; i < COVARIANCE_FEATURES; ++i)
     for (std::size_t j = i; j < COVARIANCE_FEATURES; ++j)

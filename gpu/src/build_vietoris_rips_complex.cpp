@@ -120,7 +120,21 @@ buildVietorisRipsComplex (const std::vector<float>& xyz,
   const int dimension = settings.max_dimension;
   const int limited = std::max (dimension, settings.limited_dimension);
   const MemoryBudget budget = vietorisRipsMemoryBudget (settings.memory_limit, limited);
-  const VietorisRipsProgress progress (settings.progress, dimension);
+  // The caller's callback may throw to cancel the build: that is no failure of the
+  // backend, and its exception reaches the caller.
+  std::exception_ptr cancelled;
+  const VietorisRipsProgress progress (
+      settings.progress ? ProgressCallback ([&] (std::size_t done, std::size_t total) {
+        try {
+          settings.progress (done, total);
+        }
+        catch (...) {
+          cancelled = std::current_exception();
+          throw;
+        }
+      })
+                        : ProgressCallback(),
+      dimension);
   const ScopedOpenMPThreads threads (settings.threads);
   try {
     pcl::StopWatch watch;
@@ -203,6 +217,11 @@ buildVietorisRipsComplex (const std::vector<float>& xyz,
     timings.triangles = watch.getTimeSeconds();
   }
   catch (const std::exception& error) {
+    if (cancelled) {
+      edges.clear();
+      triangles.clear();
+      std::rethrow_exception (cancelled);
+    }
     PCL_ERROR ("[pcl::tda::%s::compute] The %s backend failed: %s\n",
                name,
                backendName (backend).c_str(),

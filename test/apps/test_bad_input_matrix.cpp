@@ -18,6 +18,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -225,8 +226,8 @@ TEST_F (BadInputMatrix, BadOptions)
        "Need the input .pcd file and the output .csv file, not 1 argument."},
       {"good.txt out.csv -radius 0.3", "The input good.txt must be a .pcd file."},
       {"good.pcd out.txt -radius 0.3", "The output out.txt must be a .csv file."},
-      {barcode + "-leaf 1e-9", "-leaf 1e-09 is too small for the points' extent"},
-      {barcode + "-leaf 1e-50", "-leaf 1e-50 is too small for the points' extent"},
+      {barcode + "-leaf 2e-5", "-leaf 2e-05 is too small for the points' extent"},
+      {barcode + "-leaf 1e-50", "too coarse for -leaf 1e-50 (at most 1/100 of it)"},
   };
   for (const auto& [arguments, message] : barcode_cases)
     expectRefusal ("barcode", arguments, message);
@@ -255,7 +256,7 @@ TEST_F (BadInputMatrix, BadOptions)
       {segment + "-range -1", "Option -range needs a number >= 0, not '-1'."},
       {segment + "-leaf abc",
        "Option -leaf needs a number >= 0 and <= 3.40282e+38, not 'abc'."},
-      {segment + "-leaf 1e-9", "-leaf 1e-09 is too small for the points' extent"},
+      {segment + "-leaf 2e-5", "-leaf 2e-05 is too small for the points' extent"},
       {segment + "-auto 1",
        "Need the input .pcd file and the output .pcd file, not 3 arguments."},
       {segment + "-svg", "Option -svg needs a value."},
@@ -553,4 +554,45 @@ TEST_F (BadInputMatrix, DoubleAndIntegerCoordinatesGiveTheFloatDiagram)
       std::count (diagrams["integers"].begin(), diagrams["integers"].end(), '\n'),
       std::count (diagrams["good"].begin(), diagrams["good"].end(), '\n'));
   EXPECT_GT (std::count (diagrams["good"].begin(), diagrams["good"].end(), '\n'), 100);
+}
+
+TEST_F (BadInputMatrix, CoordinatesThatCannotResolveTheRadiusAreRefused)
+{
+  // The circle moved to UTM-like coordinates (x + 5e6, where floats are 0.5 apart),
+  // with and without colour; a cloud of NaN points; the circle with 400 copies of one
+  // point (invalid pixels written as 0, 0, 0).
+  pcl::PointCloud<pcl::PointXYZRGB> far, nan_points;
+  pcl::io::loadPCDFile (path ("colour.pcd"), far);
+  pcl::PointCloud<pcl::PointXYZ> zeros;
+  pcl::io::loadPCDFile (path ("good.pcd"), zeros);
+  for (auto& point : far) {
+    point.x += 5e6f;
+    nan_points.push_back (point);
+    nan_points.back().x = std::numeric_limits<float>::quiet_NaN();
+  }
+  for (int i = 0; i < 400; ++i)
+    zeros.push_back (pcl::PointXYZ (0.0f, 0.0f, 0.0f));
+  pcl::io::savePCDFileBinary (path ("far.pcd"), far);
+  pcl::io::savePCDFileBinary (path ("nan.pcd"), nan_points);
+  pcl::io::savePCDFileBinary (path ("zeros.pcd"), zeros);
+  const std::string too_coarse =
+      "The coordinates reach 5e+06, where 32-bit floats (PCL's point coordinates) are "
+      "0.5 apart: too coarse for ";
+  expectRefusal ("barcode", "far.pcd out.csv -radius 0.3", too_coarse + "-radius 0.3");
+  expectRefusal ("barcode",
+                 "far.pcd out.csv -radius 100 -leaf 1",
+                 too_coarse + "-leaf 1 (at most 1/100 of it). Move the cloud near the "
+                              "origin first");
+  expectRefusal ("segment", "far.pcd out.pcd -radius 0.3 -plane 0", too_coarse);
+  expectRefusal ("regions", "far.pcd out.pcd", too_coarse + "the radius from");
+  expectRefusal ("holes", "far.pcd out.pcd", too_coarse + "the radius from");
+  expectRefusal ("viewer",
+                 "far.pcd -barcode -radius 0.3 -screenshot out.png",
+                 too_coarse + "-radius 0.3");
+  expectRefusal ("barcode",
+                 "nan.pcd out.csv -radius 0.3",
+                 "The input has no finite point (all 200 are NaN or infinite).");
+  expectRefusal ("barcode",
+                 "zeros.pcd out.csv -radius 0.01 -memory 1",
+                 "399 of the 600 points repeat the position of another");
 }

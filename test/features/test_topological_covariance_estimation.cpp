@@ -191,6 +191,36 @@ TEST (TopologicalCovarianceEstimation, PointsWithoutColourHaveConstantColourEntr
     EXPECT_NEAR (entry (output[0].histogram, i, i), log_eps, 1e-3);
 }
 
+TEST (TopologicalCovarianceEstimation, FiniteOnAnExactGridInAnyUnit)
+{
+  // A flat grid of one colour and one normal, in units where positions vary by 1e8
+  // and more: the constant features' eigenvalues, the regularization, were computed
+  // below 0 and the signature was all NaN from a spacing of 1000 on.
+  for (const float spacing : {1.0f, 1e3f, 1e5f, 1e10f}) {
+    pcl::PointCloud<pcl::PointXYZRGB>::Ptr cloud (
+        new pcl::PointCloud<pcl::PointXYZRGB>);
+    pcl::PointCloud<pcl::Normal>::Ptr normals (new pcl::PointCloud<pcl::Normal>);
+    for (int i = 0; i < 20; ++i)
+      for (int j = 0; j < 20; ++j) {
+        pcl::PointXYZRGB point;
+        point.r = point.g = point.b = 128;
+        point.x = static_cast<float> (i) * spacing;
+        point.y = static_cast<float> (j) * spacing;
+        point.z = 0.0f;
+        cloud->push_back (point);
+        normals->push_back (pcl::Normal (0.0f, 0.0f, 1.0f));
+      }
+    pcl::tda::TopologicalCovarianceEstimation<pcl::PointXYZRGB, pcl::Normal> estimation;
+    estimation.setInputCloud (cloud);
+    estimation.setInputNormals (normals);
+    pcl::PointCloud<pcl::tda::CovarianceSignature> output;
+    estimation.compute (output);
+    ASSERT_EQ (output.size(), 1u) << spacing;
+    for (std::size_t k = 0; k < pcl::tda::COVARIANCE_SIGNATURE_SIZE; ++k)
+      ASSERT_TRUE (std::isfinite (output[0].histogram[k])) << spacing << " value " << k;
+  }
+}
+
 TEST (TopologicalCovarianceEstimation, BadInputGivesAnEmptyOutput)
 {
   pcl::PointCloud<pcl::PointXYZRGB>::Ptr cloud;

@@ -7,7 +7,9 @@ namespace pcl {
 namespace tda {
 
 /** \brief Called now and then by long computations with the units of work done so
- * far and the total (never 0), e.g. to drive a ProgressBar. */
+ * far and the total (never 0), e.g. to drive a ProgressBar. It may throw to cancel
+ * the computation: the exception reaches the caller (from a parallel pass, when the
+ * pass is over: ParallelProgress). */
 using ProgressCallback = std::function<void (std::size_t done, std::size_t total)>;
 
 /** \brief Tells \a progress (when set) that unit \a index of \a total is done, every

@@ -96,6 +96,7 @@ countRadiusEdges (const UniformGrid& grid,
     counts.offsets[c + 1] = count;
     tracker.advance (grid.cellSize (c));
   }
+  tracker.rethrow();
   std::partial_sum (
       counts.offsets.begin(), counts.offsets.end(), counts.offsets.begin());
   counts.triangle_bound = triangle_bound;
@@ -127,6 +128,7 @@ listRadiusEdges (const UniformGrid& grid,
     });
     tracker.advance (grid.cellSize (c));
   }
+  tracker.rethrow();
   return edges;
 }
 

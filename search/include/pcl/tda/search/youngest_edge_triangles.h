@@ -76,6 +76,7 @@ forEachEdgeWithYoungestTriangles (const EdgeAdjacency& adjacency,
         tracker.advance (PROGRESS_STEP);
     }
   }
+  tracker.rethrow();
   return num_triangles;
 }
 
