@@ -316,7 +316,10 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     in_regions += region.indices.size();
   const std::size_t in_specks =
       labelled.size() - in_regions - growing.getNumSkippedPoints();
-  if (in_specks > 0)
+  if (regions.empty())
+    print_info ("  no region of %zu points or more (-min): every point has label 0\n",
+                static_cast<std::size_t> (settings.min_size));
+  else if (in_specks > 0)
     print_info ("  %s in no region (label 0): specks of another colour under %zu "
                 "points\n",
                 pcl::tda::countOf (in_specks, "point").c_str(),

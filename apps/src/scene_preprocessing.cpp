@@ -5,9 +5,11 @@
 #include <pcl/filters/impl/filter_indices.hpp>
 #include <pcl/segmentation/impl/sac_segmentation.hpp>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/common/point3d.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/exceptions.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -61,13 +63,23 @@ preprocessScene (const pcl::PointCloud<PointT>& cloud,
                                          : "(all are NaN or infinite)");
 
   if (options.remove_plane) {
+    // RANSAC on the points scaled by a power of two to unit size (exact in float):
+    // PCL's test of a sample for collinear points has an absolute threshold, which
+    // took every sample of a scene a few centimetres wide for collinear.
+    float largest = 0.0f;
+    for (const PointT& point : *result)
+      largest = std::max (largest, point.getVector3fMap().cwiseAbs().maxCoeff());
+    const double scale = powerOfTwoScale (largest);
+    typename Cloud::Ptr scaled (new Cloud (*result));
+    for (PointT& point : *scaled)
+      point.getVector3fMap() /= static_cast<float> (scale);
     pcl::SACSegmentation<PointT> segmentation;
     segmentation.setOptimizeCoefficients (true);
     segmentation.setModelType (pcl::SACMODEL_PLANE);
     segmentation.setMethodType (pcl::SAC_RANSAC);
     segmentation.setMaxIterations (200);
-    segmentation.setDistanceThreshold (options.plane_distance);
-    segmentation.setInputCloud (result);
+    segmentation.setDistanceThreshold (options.plane_distance / scale);
+    segmentation.setInputCloud (scaled);
     pcl::PointIndices::Ptr inliers (new pcl::PointIndices);
     pcl::ModelCoefficients coefficients;
     segmentation.segment (*inliers, coefficients);

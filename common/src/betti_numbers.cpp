@@ -1,6 +1,8 @@
 #include <pcl/tda/common/betti_numbers.h>
 #include <pcl/exceptions.h>
 
+#include <cmath>
+
 namespace pcl {
 namespace tda {
 
@@ -61,6 +63,9 @@ computeBettiNumbersAt (const FilteredComplex& complex,
                        double radius)
 {
   checkMarks (complex, result);
+  if (std::isnan (radius))
+    PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                         "the radius of the Betti numbers is NaN");
   BettiNumbers betti{0, 0, 0};
   if (radius < 0.0)
     return betti;

@@ -6,6 +6,7 @@
 #include "test_data.h"
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 #include <tuple>
 
@@ -65,5 +66,35 @@ TEST (ScenePreprocessing, SamePointsForShuffledInput)
                            (*expected_voxels)[i].y,
                            (*expected_voxels)[i].z))
           << "copy " << copy << " point " << i;
+  }
+}
+
+// The plane is found in any unit: the table scene in kilometres, millimetres and
+// micrometres (scaled by powers of two near them, exact in float) loses the same
+// plane points. PCL's collinearity test of RANSAC's samples has an absolute
+// threshold, under which no sample of a scene a few centimetres wide passed.
+TEST (ScenePreprocessing, SamePlaneInAnyUnit)
+{
+  PCL_TDA_REQUIRE_DATA ("table_scene_mug_stereo_textured.pcd");
+  Cloud scene;
+  ASSERT_EQ (pcl::io::loadPCDFile (
+                 test::dataFile ("table_scene_mug_stereo_textured.pcd"), scene),
+             0);
+  ScenePreprocessing options;
+  options.max_depth = 1.5;
+  PreprocessingCounts counts;
+  preprocessScene (scene, options, &counts);
+  ASSERT_GT (counts.plane, 100000u);
+  for (const int exponent : {-10, 10, 20}) {
+    Cloud scaled = scene;
+    const float unit = std::ldexp (1.0f, exponent);
+    for (auto& point : scaled)
+      point.getVector3fMap() *= unit;
+    ScenePreprocessing scaled_options = options;
+    scaled_options.max_depth *= unit;
+    scaled_options.plane_distance *= unit;
+    PreprocessingCounts scaled_counts;
+    preprocessScene (scaled, scaled_options, &scaled_counts);
+    EXPECT_EQ (scaled_counts.plane, counts.plane) << "unit 2^" << exponent;
   }
 }

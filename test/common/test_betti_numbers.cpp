@@ -8,6 +8,7 @@
 #include "test_utils.h"
 
 #include <bitset>
+#include <limits>
 
 using namespace pcl::tda;
 
@@ -127,5 +128,10 @@ TEST (BettiNumbers, RefusesResultWithoutTriangleMarks)
   EXPECT_THROW (computePrefixBettiNumbers (complex, h0_only),
                 pcl::BadArgumentException);
   EXPECT_THROW (computeBettiNumbersAt (complex, h0_only, 1.0),
+                pcl::BadArgumentException);
+  // A NaN radius is no radius (it gave the vertices alone).
+  EXPECT_THROW (computeBettiNumbersAt (complex,
+                                       computeStandardReduction (complex),
+                                       std::numeric_limits<double>::quiet_NaN()),
                 pcl::BadArgumentException);
 }

@@ -489,6 +489,9 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
     estimation.setInputCloud (cloud);
     estimation.setMemoryLimit (1000); // the complex does not fit
     EXPECT_TRUE (fails (estimation));
+    EXPECT_EQ (estimation.getUsedRadius(), 0.0); // a refused run leaves no result
+    EXPECT_EQ (estimation.getUsedPersistenceRadius(), 0.0);
+    EXPECT_EQ (estimation.getUsedRimBandWidth(), 0.0);
   }
   {
     // A refused run after a good one leaves no result of the good one behind (it

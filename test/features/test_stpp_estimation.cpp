@@ -3,8 +3,10 @@
  * (a ring has long-lived 1-cycles, a disc none), invariance to input order, thread
  * count and scale, and bad input. */
 #include <pcl/common/io.h>
+#include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/features/stpp_estimation.h>
 #include <pcl/tda/generators/shapes.h>
+#include <pcl/tda/search/point_spacing.h>
 #include <pcl/point_types.h>
 
 #include <gtest/gtest.h>
@@ -371,6 +373,20 @@ TEST (STPPEstimation, BadInputGivesAnEmptyOutput)
   }
   stpp.setRadius (0.0);
   stpp.setMemoryLimit (1000);
+  stpp.compute (output);
+  EXPECT_TRUE (output.empty());
+  EXPECT_EQ (stpp.getCloudSize(), 0.0); // a refused run leaves no result
+  stpp.setMemoryLimit (pcl::tda::defaultMemoryLimit());
+
+  // Too few points for the spacing the radius comes from: refused by name.
+  stpp.setMaxPoints (pcl::tda::SURFACE_SPACING_NEIGHBORS);
+  stpp.compute (output);
+  EXPECT_TRUE (output.empty());
+  stpp.setRadius (0.2); // a given radius needs no spacing
+  stpp.compute (output);
+  EXPECT_EQ (output.size(), 1u);
+
+  stpp.setHomology (static_cast<pcl::tda::STPPHomology> (7)); // no such homology
   stpp.compute (output);
   EXPECT_TRUE (output.empty());
 }

@@ -255,6 +255,14 @@ TEST (TopologicalCovarianceEstimation, BadInputGivesAnEmptyOutput)
   bad_radius.setRadius (-1.0);
   bad_radius.compute (output);
   EXPECT_TRUE (output.empty());
+
+  // Too few points for the spacing the radius comes from: refused by name.
+  Estimation few_points;
+  few_points.setInputCloud (cloud);
+  few_points.setInputNormals (normals);
+  few_points.setMaxPoints (1);
+  few_points.compute (output);
+  EXPECT_TRUE (output.empty());
 }
 
 } // namespace

@@ -267,6 +267,13 @@ TEST (HoleFilling, BadInput)
     filler.setInputCloud (detected.cloud);
     ASSERT_TRUE (filler.reconstruct (filled));
     EXPECT_EQ (filled.size(), detected.cloud->size());
+    // Also a segment of one point, whose spacing cannot be measured.
+    Cloud::Ptr one (new Cloud);
+    one->push_back (pcl::PointXYZ (1.0f, 2.0f, 3.0f));
+    filler.setInputCloud (one);
+    ASSERT_TRUE (filler.reconstruct (filled));
+    ASSERT_EQ (filled.size(), 1u);
+    EXPECT_EQ (filled[0].x, 1.0f);
   }
 }
 

@@ -28,7 +28,8 @@ computePrefixBettiNumbers (const FilteredComplex& complex,
 
 /** \brief Betti numbers of the subcomplex of simplices with value <= \a radius,
  * from the marks of \a result (Eq. 5.1).
- * \throws pcl::BadArgumentException when \a result lacks marks for \a complex
+ * \throws pcl::BadArgumentException when \a result lacks marks for \a complex, or
+ * \a radius is NaN
  */
 BettiNumbers
 computeBettiNumbersAt (const FilteredComplex& complex,

@@ -282,6 +282,11 @@ private:
   bool
   findHoles ();
 
+  /** \brief Forgets the results of the last run (before a run, and after a refused
+   * one: a refused run leaves none). */
+  void
+  clearResults ();
+
   double radius_ = 0.0;
   std::size_t max_cycle_length_ = 0;
   double max_tilt_degrees_ = DEFAULT_MAX_TILT_DEGREES;

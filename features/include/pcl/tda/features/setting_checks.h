@@ -5,8 +5,10 @@
 // which they do not use.
 
 #include <pcl/console/print.h>
+#include <pcl/tda/search/point_spacing.h>
 
 #include <cmath>
+#include <cstddef>
 #include <string>
 
 namespace pcl {
@@ -29,6 +31,25 @@ checkOptionalLength (double value,
              what,
              zero_means,
              value);
+  return false;
+}
+
+/** \brief True when \a max_points (setMaxPoints(); 0: all points) leaves a sample
+ * whose spacing can be measured, as the radius needs when it is chosen (\a radius
+ * 0): at least SURFACE_SPACING_NEIGHBORS + 1 points; else prints a PCL_ERROR naming
+ * the class \a class_name and returns false. */
+inline bool
+checkMaxPoints (std::size_t max_points, double radius, const std::string& class_name)
+{
+  if (max_points == 0 || max_points > SURFACE_SPACING_NEIGHBORS || radius > 0.0)
+    return true;
+  PCL_ERROR ("[pcl::tda::%s::compute] The max points (%zu) must be 0 (all) or at "
+             "least %zu when the radius is chosen from their spacing (each point's "
+             "distance to its %zuth nearest); or set the radius.\n",
+             class_name.c_str(),
+             max_points,
+             SURFACE_SPACING_NEIGHBORS + 1,
+             SURFACE_SPACING_NEIGHBORS);
   return false;
 }
 

@@ -22,12 +22,7 @@ template <typename PointInT, typename PointOutT>
 bool
 HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
 {
-  holes_.clear();
-  diagram_.clear();
-  rim_band_labels_.clear();
-  complex_ = FilteredComplex();
-  search_counts_ = SearchCounts();
-  used_radius_ = used_persistence_radius_ = 0.0;
+  clearResults();
   if (!checkFeatureInput (pcl::PCLBase<PointInT>::initCompute(),
                           getClassName(),
                           this->search_radius_,
@@ -48,6 +43,18 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
              min_hole_radius_, getClassName(), "min hole radius", "for the default") &&
          checkOptionalLength (
              band_width_, getClassName(), "rim band width", "to choose it");
+}
+
+template <typename PointInT, typename PointOutT>
+void
+HoleBoundaryEstimation<PointInT, PointOutT>::clearResults()
+{
+  holes_.clear();
+  diagram_.clear();
+  rim_band_labels_.clear();
+  complex_ = FilteredComplex();
+  search_counts_ = SearchCounts();
+  used_radius_ = used_persistence_radius_ = used_band_width_ = 0.0;
 }
 
 template <typename PointInT, typename PointOutT>
@@ -220,8 +227,7 @@ void
 HoleBoundaryEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
 {
   if (!findHoles()) {
-    holes_.clear();
-    rim_band_labels_.clear();
+    clearResults();
     output.width = output.height = 0;
     output.clear();
     return;

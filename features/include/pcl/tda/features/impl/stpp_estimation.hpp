@@ -27,8 +27,17 @@ STPPEstimation<PointInT, PointOutT>::initCompute()
                           this->k_,
                           this->tree_ != nullptr))
     return false;
+  if (homology_ != STPPHomology::BETTI_0 && homology_ != STPPHomology::BETTI_1 &&
+      homology_ != STPPHomology::BETTI_0_1) {
+    PCL_ERROR ("[pcl::tda::%s::compute] Unknown homology %d: BETTI_0, BETTI_1 or "
+               "BETTI_0_1.\n",
+               getClassName().c_str(),
+               static_cast<int> (homology_));
+    return false;
+  }
   return indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) &&
-         checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
+         checkOptionalLength (radius_, getClassName(), "radius", "to choose it") &&
+         checkMaxPoints (max_points_, radius_, getClassName());
 }
 
 template <typename PointInT, typename PointOutT>
@@ -141,6 +150,7 @@ STPPEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
   float* histogram = output[0].histogram;
   std::fill (histogram, histogram + STPP_SIGNATURE_SIZE, 0.0f);
   if (!computeSignature (histogram)) {
+    cloud_size_ = 0.0;
     pairing_vector_.clear();
     level_radii_.clear();
     level_diagrams_.clear();

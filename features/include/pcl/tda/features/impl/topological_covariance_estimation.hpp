@@ -41,7 +41,8 @@ TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::initCompute()
                static_cast<std::size_t> (input_->size()));
     return false;
   }
-  return checkOptionalLength (radius_, getClassName(), "radius", "to choose it");
+  return checkOptionalLength (radius_, getClassName(), "radius", "to choose it") &&
+         checkMaxPoints (max_points_, radius_, getClassName());
 }
 
 template <typename PointInT, typename PointNT, typename PointOutT>

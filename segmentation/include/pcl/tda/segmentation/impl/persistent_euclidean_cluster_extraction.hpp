@@ -211,7 +211,15 @@ PersistentEuclideanClusterExtraction<PointT>::extract (
                                                                 piece_ratio_);
     chosen_distance_ = choice.distance;
     auto_distance_is_clear_ = choice.clear;
-    if (!choice.clear)
+    if (choice.num_clusters == 0)
+      PCL_WARN ("[pcl::tda::%s::extract] No component of the minimum cluster size "
+                "stands apart above the sampling scale %g and the floor "
+                "(setAutoMinDistance()), up to the max distance: too few distinct "
+                "points to choose a distance; the max distance %g is used.\n",
+                getClassName().c_str(),
+                choice.sampling_scale,
+                chosen_distance_);
+    else if (!choice.clear)
       PCL_WARN ("[pcl::tda::%s::extract] The H0 diagram shows no clear gap: the "
                 "automatic distance %g (in a step of %zu cluster%s, pieces of larger "
                 "ones not counted, from %g to %g; sampling scale %g) is a guess. Check "

@@ -293,7 +293,13 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
           DEFAULT_REGION_COLOR_THRESHOLD);
       chosen_region_threshold_ = choice.threshold;
       auto_threshold_is_clear_ = choice.clear;
-      if (!choice.clear)
+      if (choice.num_regions == 0)
+        PCL_WARN ("[pcl::tda::%s::extract] No region reaches the minimum size at any "
+                  "colour threshold: the default region colour threshold %g is "
+                  "used.\n",
+                  name,
+                  chosen_region_threshold_);
+      else if (!choice.clear)
         PCL_WARN (
             "[pcl::tda::%s::extract] The region barcode shows no clear gap (the "
             "step taken: %zu region%s from Delta E %g to %g): the automatic "

@@ -51,10 +51,14 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
         deinitCompute();
         return false;
       }
+  // The spacing places SURFACE mode's new points; without holes to fill so, it is
+  // not needed (a segment too small to measure it is returned as it is).
+  const bool fills_surfaces = mode_ == Mode::SURFACE && !holes_.empty();
   double spacing = spacing_;
-  if (spacing == 0.0)
+  if (spacing == 0.0 && fills_surfaces)
     spacing = surfaceSpacing (*input_);
-  if (!(spacing > 0.0) || !std::isfinite (spacing)) {
+  if ((fills_surfaces || spacing_ != 0.0) &&
+      (!(spacing > 0.0) || !std::isfinite (spacing))) {
     PCL_ERROR ("[pcl::tda::%s::reconstruct] The spacing must be positive and finite "
                "(got %g; 0 measures it, which needs %zu distinct finite points).\n",
                class_name_.c_str(),
@@ -63,7 +67,7 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
     deinitCompute();
     return false;
   }
-  if (mode_ == Mode::SURFACE && !gridsFitMemory (spacing)) {
+  if (fills_surfaces && !gridsFitMemory (spacing)) {
     deinitCompute();
     return false;
   }
@@ -71,7 +75,7 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
   // One search tree and one set of marks for all holes (SURFACE mode only).
   ScaledSearch search;
   std::vector<std::uint8_t> taken;
-  if (mode_ == Mode::SURFACE && !holes_.empty()) {
+  if (fills_surfaces) {
     buildScaledSearch (search);
     taken.assign (input_->size(), 0);
   }
