@@ -26,20 +26,31 @@ sortedPoints (const Cloud& cloud)
   return points;
 }
 
+/** The table scene and the segmentation tool's preprocessing of it (depth cut-off
+ * 1.5 m, plane removal). */
+class TableScene : public ::testing::Test {
+protected:
+  void
+  SetUp () override
+  {
+    PCL_TDA_REQUIRE_DATA ("table_scene_mug_stereo_textured.pcd");
+    ASSERT_EQ (pcl::io::loadPCDFile (
+                   test::dataFile ("table_scene_mug_stereo_textured.pcd"), scene),
+               0);
+    options.max_depth = 1.5;
+  }
+
+  Cloud scene;
+  ScenePreprocessing options;
+};
+
 } // namespace
 
 // The depth cut-off, RANSAC plane removal and voxel grid give the same points, in
 // the same order, for shuffled copies of the table scene (RANSAC samples indices, so
 // it needs a canonical order first).
-TEST (ScenePreprocessing, SamePointsForShuffledInput)
+TEST_F (TableScene, SamePointsForShuffledInput)
 {
-  PCL_TDA_REQUIRE_DATA ("table_scene_mug_stereo_textured.pcd");
-  Cloud scene;
-  ASSERT_EQ (pcl::io::loadPCDFile (
-                 test::dataFile ("table_scene_mug_stereo_textured.pcd"), scene),
-             0);
-  ScenePreprocessing options;
-  options.max_depth = 1.5;
   PreprocessingCounts counts;
   const Cloud::Ptr expected = preprocessScene (scene, options, &counts);
   ASSERT_GT (counts.plane, 100000u);
@@ -73,15 +84,8 @@ TEST (ScenePreprocessing, SamePointsForShuffledInput)
 // micrometres (scaled by powers of two near them, exact in float) loses the same
 // plane points. PCL's collinearity test of RANSAC's samples has an absolute
 // threshold, under which no sample of a scene a few centimetres wide passed.
-TEST (ScenePreprocessing, SamePlaneInAnyUnit)
+TEST_F (TableScene, SamePlaneInAnyUnit)
 {
-  PCL_TDA_REQUIRE_DATA ("table_scene_mug_stereo_textured.pcd");
-  Cloud scene;
-  ASSERT_EQ (pcl::io::loadPCDFile (
-                 test::dataFile ("table_scene_mug_stereo_textured.pcd"), scene),
-             0);
-  ScenePreprocessing options;
-  options.max_depth = 1.5;
   PreprocessingCounts counts;
   preprocessScene (scene, options, &counts);
   ASSERT_GT (counts.plane, 100000u);
