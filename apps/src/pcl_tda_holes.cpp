@@ -183,13 +183,14 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   if (!blob.data.empty())
     pcl::fromPCLPointCloud2 (blob, *cloud);
   console.endStep (std::to_string (cloud->size()) + " points");
-  const double spacing_radius =
-      Estimation::AUTO_RADIUS_PER_SPACING * pcl::tda::surfaceSpacing (*cloud);
-  if (options.radius > 0.0)
-    pcl::tda::checkToolCoordinates (*cloud, options.radius, "-radius");
-  else if (spacing_radius > 0.0) // else the estimation says there are too few points
+  const double radius = options.radius > 0.0 ? options.radius
+                                             : Estimation::AUTO_RADIUS_PER_SPACING *
+                                                   pcl::tda::surfaceSpacing (*cloud);
+  if (radius > 0.0) // else the estimation says there are too few points
     pcl::tda::checkToolCoordinates (
-        *cloud, spacing_radius, "the radius from the spacing");
+        *cloud,
+        radius,
+        options.radius > 0.0 ? "-radius" : "the radius from the spacing");
 
   Estimation estimation;
   estimation.setInputCloud (cloud);
