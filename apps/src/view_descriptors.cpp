@@ -5,6 +5,7 @@
 #include <pcl/features/normal_3d.h>
 #include <pcl/features/our_cvfh.h>
 #include <pcl/features/vfh.h>
+#include <pcl/tda/apps/coordinate_check.h>
 #include <pcl/tda/apps/seeded_esf.h>
 #include <pcl/tda/apps/view_descriptors.h>
 #include <pcl/tda/common/error_message.h>
@@ -207,6 +208,7 @@ stpp (const ViewInput& input, STPPHomology homology)
   estimation.compute (output);
   if (output.size() != 1)
     failTopological ("STPP");
+  checkToolCoordinates (*input.points, estimation.getLevelRadii().front(), "radius");
   return stppSignatureValues (output[0], homology);
 }
 
@@ -224,6 +226,7 @@ covariance (const ViewInput& input)
   estimation.compute (output);
   if (output.size() != 1)
     failTopological ("The topological covariance descriptor");
+  checkToolCoordinates (*input.colored_surface, estimation.getUsedRadius(), "radius");
   return singleHistogram (output, "covariance");
 }
 

@@ -179,6 +179,31 @@ TEST (STPPTool, RefusesComplexesOverTheMemoryLimit)
   }
 }
 
+TEST (STPPTool, SkipsAViewTooFarFromTheOriginForItsRadius)
+{
+  // The mug moved to UTM-like coordinates (x + 5e6, where floats are 0.5 apart): its
+  // radius, a few millimetres, cannot be resolved; skipped, saying so, by both
+  // topological descriptors.
+  const std::string folder = pcl::tda::test::temporaryFolder ("stpp_tool");
+  const std::vector<std::string> paths = writeViews (folder);
+  pcl::PointCloud<pcl::PointXYZ> far;
+  ASSERT_EQ (pcl::io::loadPCDFile (paths[0], far), 0);
+  for (auto& point : far)
+    point.x += 5e6f;
+  const std::string far_path = folder + "/far.pcd";
+  pcl::io::savePCDFileBinary (far_path, far);
+  const std::string csv = folder + "/out.csv";
+  for (const std::string descriptor : {"stpp", "covariance"}) {
+    const RunResult result =
+        runTool (csv + " " + far_path + " " + paths[1] + " -descriptor " + descriptor);
+    EXPECT_EQ (result.exit_code, 1) << result.output;
+    EXPECT_NE (result.output.find ("Skipping " + far_path + ": The coordinates reach"),
+               std::string::npos)
+        << result.output;
+    EXPECT_EQ (linesOf (csv).size(), 2u); // the other view
+  }
+}
+
 TEST (STPPTool, RefusesBadInputAndWritesNothing)
 {
   const std::string folder = pcl::tda::test::temporaryFolder ("stpp_tool");
