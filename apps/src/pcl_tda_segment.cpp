@@ -198,7 +198,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     }
     centroid /= static_cast<float> (clusters[c].indices.size());
     if (c < MAX_LINES)
-      print_info ("  cluster %zu: %zu points, centroid (%.3f, %.3f, %.3f)\n",
+      print_info ("  cluster %zu: %zu points, centroid (%.4g, %.4g, %.4g)\n",
                   c + 1,
                   clusters[c].indices.size(),
                   centroid[0],
