@@ -5,11 +5,10 @@
 #include <pcl/filters/impl/filter_indices.hpp>
 #include <pcl/segmentation/impl/sac_segmentation.hpp>
 #include <pcl/tda/apps/scene_preprocessing.h>
-#include <pcl/tda/common/point3d.h>
+#include <pcl/tda/common/coordinate_scale.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/exceptions.h>
 
-#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -66,10 +65,7 @@ preprocessScene (const pcl::PointCloud<PointT>& cloud,
     // RANSAC on the points scaled by a power of two to unit size (exact in float):
     // PCL's test of a sample for collinear points has an absolute threshold, which
     // took every sample of a scene a few centimetres wide for collinear.
-    float largest = 0.0f;
-    for (const PointT& point : *result)
-      largest = std::max (largest, point.getVector3fMap().cwiseAbs().maxCoeff());
-    const double scale = powerOfTwoScale (largest);
+    const double scale = cloudScale (*result);
     typename Cloud::Ptr scaled (new Cloud (*result));
     for (PointT& point : *scaled)
       point.getVector3fMap() /= static_cast<float> (scale);

@@ -1,3 +1,4 @@
+#include <pcl/tda/common/coordinate_scale.h>
 #include <pcl/tda/search/nearest_neighbors.h>
 #include <pcl/tda/search/point_spacing.h>
 

@@ -1,7 +1,7 @@
 #pragma once
 
 #include <pcl/common/point_tests.h>
-#include <pcl/tda/common/point3d.h>
+#include <pcl/tda/common/coordinate_scale.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_cloud.h>
 
@@ -17,19 +17,6 @@ namespace tda {
 /** \brief The finest share of a tool's length scale (its radius, its leaf) that the
  * float coordinates of its input may round to: 1/100. */
 constexpr double MAX_RESOLUTION_PER_SCALE = 0.01;
-
-/** \brief The largest magnitude of a finite coordinate of \a cloud; -1 when no
- * point is finite. */
-template <typename PointT>
-double
-largestCoordinate (const pcl::PointCloud<PointT>& cloud)
-{
-  float largest = -1.0f;
-  for (const PointT& point : cloud)
-    if (pcl::isXYZFinite (point))
-      largest = std::max (largest, point.getVector3fMap().cwiseAbs().maxCoeff());
-  return largest;
-}
 
 /** \brief The float resolution at \a magnitude (>= 0): the step of 32-bit floats
  * (PCL's point coordinates) there, the rounding a coordinate may carry (0.5 at 5e6,

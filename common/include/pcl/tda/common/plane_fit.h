@@ -1,6 +1,7 @@
 #pragma once
 
 #include <pcl/common/eigen.h>
+#include <pcl/tda/common/coordinate_scale.h>
 #include <pcl/tda/common/point3d.h>
 
 #include <Eigen/Core>

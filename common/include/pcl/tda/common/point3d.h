@@ -38,20 +38,5 @@ withinRadius (const Point3d& p, const Point3d& q, double radius)
   return std::sqrt (squared) <= radius;
 }
 
-/** \brief The power of two that brings \a magnitude (finite, >= 0) to [0.5, 1); 1 for
- * 0. Coordinates divided by that of their largest magnitude keep their digits in
- * float, and their squares neither overflow nor underflow it: float searches (FLANN,
- * PCL's k-d tree, eigen33) so work on clouds in any unit (coordinates of 1e25 or
- * 1e-25), and give the same results as in metres. */
-inline double
-powerOfTwoScale (double magnitude)
-{
-  if (magnitude == 0.0)
-    return 1.0;
-  int exponent = 0;
-  std::frexp (magnitude, &exponent);
-  return std::ldexp (1.0, exponent);
-}
-
 } // namespace tda
 } // namespace pcl

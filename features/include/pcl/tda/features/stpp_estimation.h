@@ -206,6 +206,11 @@ private:
   bool
   computeSignature (float* histogram);
 
+  /** \brief Forgets the results of the last run (before a run, and after a refused
+   * one: a refused run leaves none). */
+  void
+  clearResults ();
+
   double radius_ = 0.0;
   std::size_t max_points_ = DEFAULT_MAX_POINTS;
   STPPHomology homology_ = STPPHomology::BETTI_0_1;

@@ -17,10 +17,7 @@ template <typename PointInT, typename PointOutT>
 bool
 STPPEstimation<PointInT, PointOutT>::initCompute()
 {
-  pairing_vector_.clear();
-  level_radii_.clear();
-  level_diagrams_.clear();
-  cloud_size_ = 0.0;
+  clearResults();
   if (!checkFeatureInput (pcl::PCLBase<PointInT>::initCompute(),
                           getClassName(),
                           this->search_radius_,
@@ -38,6 +35,16 @@ STPPEstimation<PointInT, PointOutT>::initCompute()
   return indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) &&
          checkOptionalLength (radius_, getClassName(), "radius", "to choose it") &&
          checkMaxPoints (max_points_, radius_, getClassName());
+}
+
+template <typename PointInT, typename PointOutT>
+void
+STPPEstimation<PointInT, PointOutT>::clearResults()
+{
+  pairing_vector_.clear();
+  level_radii_.clear();
+  level_diagrams_.clear();
+  cloud_size_ = 0.0;
 }
 
 template <typename PointInT, typename PointOutT>
@@ -150,10 +157,7 @@ STPPEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
   float* histogram = output[0].histogram;
   std::fill (histogram, histogram + STPP_SIGNATURE_SIZE, 0.0f);
   if (!computeSignature (histogram)) {
-    cloud_size_ = 0.0;
-    pairing_vector_.clear();
-    level_radii_.clear();
-    level_diagrams_.clear();
+    clearResults();
     output.width = output.height = 0;
     output.clear();
   }

@@ -2,6 +2,7 @@
 
 #include <pcl/common/point_tests.h>
 #include <pcl/search/kdtree.h>
+#include <pcl/tda/common/coordinate_scale.h>
 #include <pcl/tda/common/point3d.h>
 #include <pcl/tda/common/system_memory.h>
 #include <pcl/tda/features/distance_grid.h>
@@ -96,12 +97,7 @@ template <typename PointT>
 void
 HoleFilling<PointT>::buildScaledSearch (ScaledSearch& search) const
 {
-  double largest = 0.0;
-  for (const PointT& p : *input_)
-    if (pcl::isXYZFinite (p))
-      largest = std::max (
-          largest, static_cast<double> (p.getVector3fMap().cwiseAbs().maxCoeff()));
-  search.scale = powerOfTwoScale (largest);
+  search.scale = cloudScale (*input_);
   pcl::PointCloud<pcl::PointXYZ>::Ptr scaled (new pcl::PointCloud<pcl::PointXYZ>);
   scaled->reserve (input_->size());
   for (const PointT& p : *input_)
