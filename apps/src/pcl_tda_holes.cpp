@@ -6,6 +6,7 @@
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
 #include <pcl/tda/apps/coordinate_check.h>
+#include <pcl/tda/apps/new_point_fields.h>
 #include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
 #include <pcl/tda/apps/tool_options.h>
@@ -65,7 +66,8 @@ printHelp (const char* program)
   print_info ("    -max-cycle N = report only rims of at most N points (default: no "
               "limit)\n");
   print_info ("    -fill F.pcd = also write the cloud with its holes filled: the "
-              "input points,\n                  then the new ones\n");
+              "input points,\n                  then the new ones (with the fields "
+              "of their nearest rim points)\n");
   print_info ("    -fill-mode M = surface (new points on a surface fitted around "
               "the hole, spaced\n                  like the cloud; the default) or "
               "centroid (one point per hole)\n");
@@ -247,6 +249,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     labelled[i].label = labels.empty() ? 0 : labels[i];
 
   Cloud filled;
+  pcl::PCLPointCloud2 filled_fields;          // filled, with the input's fields
   std::vector<std::uint32_t> new_point_holes; // per new point, its hole's number
   if (!options.filled.empty()) {
     console.beginStep ("Filling", options.fill_mode);
@@ -264,6 +267,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     for (std::size_t k = 0; k < counts.size(); ++k)
       new_point_holes.insert (
           new_point_holes.end(), counts[k], static_cast<std::uint32_t> (k + 1));
+    filled_fields = pcl::tda::withNewPoints (blob, filled, filler.getNewPointSources());
     console.endStep (std::to_string (filled.size() - cloud->size()) + " new points");
   }
 
@@ -271,7 +275,10 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   try {
     pcl::tda::savePointCloudFile (outputs.temporary (options.output), labelled);
     if (!options.filled.empty())
-      pcl::tda::savePointCloudFile (outputs.temporary (options.filled), filled);
+      pcl::tda::savePointCloudFile (outputs.temporary (options.filled),
+                                    filled_fields,
+                                    cloud->sensor_origin_,
+                                    cloud->sensor_orientation_);
     if (!options.csv.empty())
       saveHolesCsv (outputs.temporary (options.csv), holes, estimation.getUsedRadius());
     if (!options.barcode_svg.empty()) {

@@ -163,8 +163,10 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   extraction.setMaxClusterSize (options.max_size);
   extraction.setAutoMaxDistance (options.automatic);
   extraction.setAutoPieceRatio (options.piece_ratio);
-  // The automatic distance never goes below the voxel grid's spacing.
-  extraction.setAutoMinDistance (options.preprocessing.leaf);
+  // The automatic distance never goes below the voxel grid's spacing, nor below
+  // what the coordinates resolve (as the check of -radius above).
+  extraction.setAutoMinDistance (
+      std::max (options.preprocessing.leaf, pcl::tda::smallestResolvedScale (*points)));
   extraction.setMemoryLimit (options.memory_limit);
   std::vector<pcl::PointIndices> clusters;
   extraction.extract (clusters);
@@ -198,7 +200,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     }
     centroid /= static_cast<float> (clusters[c].indices.size());
     if (c < MAX_LINES)
-      print_info ("  cluster %zu: %zu points, centroid (%.4g, %.4g, %.4g)\n",
+      print_info ("  cluster %zu: %zu points, centroid (%g, %g, %g)\n",
                   c + 1,
                   clusters[c].indices.size(),
                   centroid[0],

@@ -4,6 +4,7 @@
 // table, the filled cloud (input first, then new points inside the holes), the
 // pictures, and the real scans.
 
+#include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/generators/hole_surfaces.h>
@@ -122,6 +123,63 @@ TEST (HolesTool, LabelsTheRimBandsOfEveryHole)
   EXPECT_GT (lines (svg).size(), 3u);
   EXPECT_TRUE (isPNGFile (png));
   EXPECT_TRUE (isPNGFile (temporaryPath ("b.png"))); // the barcode, beside its SVG
+}
+
+// The filled cloud keeps every field of the input file: the input points as they
+// were, the new points with the fields of the rim point nearest to each (the rims
+// of the CSV table) and their own x, y, z.
+TEST (HolesTool, FilledCloudKeepsTheInputFields)
+{
+  const pcl::tda::HoleSurface surface = plane (13);
+  pcl::PointCloud<pcl::PointXYZRGBNormal> input;
+  pcl::copyPointCloud (*surface.cloud, input);
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    input[i].r = static_cast<std::uint8_t> (i % 256);
+    input[i].g = static_cast<std::uint8_t> (i / 256);
+    input[i].b = 7;
+    input[i].normal_x = input[i].normal_y = 0.0f;
+    input[i].normal_z = 1.0f;
+    input[i].curvature = static_cast<float> (i); // names the point
+  }
+  const std::string in = temporaryPath ("in.pcd"), out = temporaryPath ("out.pcd"),
+                    csv = temporaryPath ("holes.csv"), filled = temporaryPath ("f.pcd");
+  pcl::io::savePCDFileBinary (in, input);
+  const RunResult result =
+      runTool (in + " " + out + " -csv " + csv + " -fill " + filled);
+  ASSERT_EQ (result.exit_code, 0) << result.output;
+
+  std::vector<std::size_t> rims;
+  const std::vector<std::string> table = lines (csv);
+  for (std::size_t k = 1; k < table.size(); ++k) {
+    std::istringstream rim (table[k].substr (table[k].rfind (',') + 1));
+    for (std::size_t index; rim >> index;)
+      rims.push_back (index);
+  }
+  ASSERT_FALSE (rims.empty());
+  pcl::PointCloud<pcl::PointXYZRGBNormal> with_fill;
+  ASSERT_EQ (pcl::io::loadPCDFile (filled, with_fill), 0);
+  ASSERT_GT (with_fill.size(), input.size());
+  for (std::size_t i = 0; i < input.size(); ++i) {
+    ASSERT_EQ (with_fill[i].getVector3fMap(), input[i].getVector3fMap()) << i;
+    ASSERT_EQ (with_fill[i].rgba, input[i].rgba) << i;
+    ASSERT_EQ (with_fill[i].curvature, input[i].curvature) << i;
+  }
+  for (std::size_t i = input.size(); i < with_fill.size(); ++i) {
+    const auto distance = [&] (std::size_t rim_point) {
+      return (input[rim_point].getVector3fMap() - with_fill[i].getVector3fMap())
+          .squaredNorm();
+    };
+    const std::size_t nearest = *std::min_element (
+        rims.begin(), rims.end(), [&] (std::size_t a, std::size_t b) {
+          return distance (a) < distance (b);
+        });
+    const auto source = static_cast<std::size_t> (with_fill[i].curvature);
+    ASSERT_LT (source, input.size()) << i;
+    EXPECT_FLOAT_EQ (distance (source), distance (nearest)) << i;
+    EXPECT_EQ (with_fill[i].rgba, input[source].rgba) << i;
+    EXPECT_EQ (with_fill[i].normal_z, 1.0f) << i;
+    EXPECT_NE (with_fill[i].getVector3fMap(), input[source].getVector3fMap()) << i;
+  }
 }
 
 TEST (HolesTool, SmallestHoleRadius)

@@ -2,10 +2,12 @@
 // tabletop scenes and against pcl::EuclideanClusterExtraction on the real table
 // scene, its barcode and summary, and its refusals.
 
+#include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/apps/cloud_files.h>
 #include <pcl/tda/apps/scene_preprocessing.h>
+#include <pcl/tda/generators/shapes.h>
 #include <pcl/tda/generators/tabletop_scenes.h>
 #include <pcl/point_types.h>
 
@@ -194,6 +196,36 @@ TEST (SegmentTool, AnyDistanceOnTheWholeTableScene)
                                  " smaller clusters"),
              std::string::npos)
       << result.output.substr (0, 2000);
+}
+
+// A circle of radius 1 moved to x = 20000, where floats are 2^-9 apart: the
+// coordinates resolve -radius 0.3 (the check asks 100 steps of it) but not the
+// 0.157 that -auto chooses near the origin; there the automatic distance stops at
+// what they resolve, 100 steps (0.195).
+TEST (SegmentTool, AutoDistanceNotBelowWhatTheCoordinatesResolve)
+{
+  CircleParameters circle;
+  circle.num_points = 200;
+  const auto points = generateCircle (circle).cloud;
+  for (const double shift : {0.0, 20000.0}) {
+    pcl::PointCloud<pcl::PointXYZ> moved;
+    pcl::copyPointCloud (*points, moved);
+    for (auto& point : moved)
+      point.x += static_cast<float> (shift);
+    const std::string input = temporaryPath ("moved_circle.pcd");
+    savePointCloudFile (input, moved);
+    const RunResult result = runTool (input + " " + temporaryPath ("labels.pcd") +
+                                      " -radius 0.3 -auto -plane 0");
+    ASSERT_EQ (result.exit_code, 0) << result.output;
+    const std::string before = "1 cluster at distance ";
+    const auto at = result.output.find (before);
+    ASSERT_NE (at, std::string::npos) << result.output;
+    const double chosen = std::stod (result.output.substr (at + before.size()));
+    if (shift == 0.0)
+      EXPECT_LT (chosen, 0.18) << "the circle needs a case the floor changes";
+    else
+      EXPECT_GE (chosen, 100.0 / 512.0);
+  }
 }
 
 TEST (SegmentTool, RefusesBadInputWithClearErrors)

@@ -206,6 +206,8 @@ TEST (HoleFilling, OtherFieldsCopiedFromTheNearestRimPoint)
   pcl::PointCloud<pcl::PointXYZL> filled;
   ASSERT_TRUE (filler.reconstruct (filled));
   ASSERT_GT (filled.size(), labelled->size());
+  const pcl::Indices& sources = filler.getNewPointSources();
+  ASSERT_EQ (sources.size(), filled.size() - labelled->size());
   for (std::size_t i = labelled->size(); i < filled.size(); ++i) {
     const pcl::PointXYZL* nearest = nullptr;
     float best = 1e9f;
@@ -220,7 +222,13 @@ TEST (HoleFilling, OtherFieldsCopiedFromTheNearestRimPoint)
       }
     ASSERT_NE (nearest, nullptr);
     EXPECT_EQ (filled[i].label, nearest->label);
+    const pcl::PointXYZL& source = (*labelled)[sources[i - labelled->size()]];
+    EXPECT_FLOAT_EQ ((source.getVector3fMap() - filled[i].getVector3fMap()).norm(),
+                     best);
   }
+  // A second run starts the list again.
+  ASSERT_TRUE (filler.reconstruct (filled));
+  EXPECT_EQ (sources.size(), filled.size() - labelled->size());
 }
 
 TEST (HoleFilling, BadInput)

@@ -28,6 +28,18 @@ floatResolution (double magnitude)
   return magnitude > 0.0 ? std::ldexp (powerOfTwoScale (magnitude), -24) : 0.0;
 }
 
+/** \brief The smallest length scale the coordinates of \a cloud resolve, as
+ * checkToolCoordinates() requires of a tool's radius or leaf: the float resolution
+ * at its largest coordinate divided by MAX_RESOLUTION_PER_SCALE (0 for a cloud with
+ * no finite point, or at the origin). */
+template <typename PointT>
+double
+smallestResolvedScale (const pcl::PointCloud<PointT>& cloud)
+{
+  return floatResolution (std::max (largestCoordinate (cloud), 0.0)) /
+         MAX_RESOLUTION_PER_SCALE;
+}
+
 /** \brief Checks a tool's input before the work: it has a finite point, and its
  * coordinates resolve the tool's length scale \a scale, given by option \a option
  * ("-radius"): the float resolution at its largest coordinate is at most
@@ -47,7 +59,7 @@ checkToolCoordinates (const pcl::PointCloud<PointT>& cloud,
                          "The input has no finite point (all "
                              << cloud.size() << " are NaN or infinite).");
   const double resolution = floatResolution (largest);
-  if (resolution > MAX_RESOLUTION_PER_SCALE * scale)
+  if (smallestResolvedScale (cloud) > scale)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "The coordinates reach "
                              << largest

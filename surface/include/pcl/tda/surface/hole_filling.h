@@ -101,6 +101,16 @@ public:
     return new_point_counts_;
   }
 
+  /** \brief For each new point of the last reconstruct(), in the order of the
+   * output, the index of the input point whose fields it copies (the nearest point of
+   * its rim): to carry fields a point type does not hold, as a tool that reads any
+   * PCD file does. */
+  const pcl::Indices&
+  getNewPointSources () const
+  {
+    return new_point_sources_;
+  }
+
   /** \brief The class name, as PCL's classes report it in their messages. */
   const std::string&
   getClassName () const
@@ -141,20 +151,22 @@ private:
   void
   buildScaledSearch (ScaledSearch& search) const;
 
-  /** \brief The new points of one hole, appended to \a output. In SURFACE mode
-   * \a search searches the input and \a taken (one 0 per input point, left all 0)
-   * marks the surroundings already seen. */
+  /** \brief The new points of one hole, appended to \a output, and the input points
+   * they copy to new_point_sources_. In SURFACE mode \a search searches the input and
+   * \a taken (one 0 per input point, left all 0) marks the surroundings already seen.
+   */
   void
   fillHole (const HoleRim& hole,
             double spacing,
             const ScaledSearch& search,
             std::vector<std::uint8_t>& taken,
-            pcl::PointCloud<PointT>& output) const;
+            pcl::PointCloud<PointT>& output);
 
   std::vector<HoleRim> holes_;
   Mode mode_ = Mode::SURFACE;
   double spacing_ = 0.0;
   std::vector<std::size_t> new_point_counts_;
+  pcl::Indices new_point_sources_;
   std::string class_name_ = "HoleFilling";
 };
 

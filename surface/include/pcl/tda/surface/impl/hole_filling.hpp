@@ -35,6 +35,7 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
 {
   output.clear();
   new_point_counts_.clear();
+  new_point_sources_.clear();
   if (!initCompute()) {
     PCL_ERROR ("[pcl::tda::%s::reconstruct] No input cloud: call setInputCloud().\n",
                class_name_.c_str());
@@ -168,7 +169,7 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
                                double spacing,
                                const ScaledSearch& search,
                                std::vector<std::uint8_t>& taken,
-                               pcl::PointCloud<PointT>& output) const
+                               pcl::PointCloud<PointT>& output)
 {
   using namespace hole_filling_detail;
   std::vector<Point3d> rim_points;
@@ -187,10 +188,11 @@ HoleFilling<PointT>::fillHole (const HoleRim& hole,
         nearest = i;
       }
     }
-    return (*input_)[hole.rim[nearest]];
+    return static_cast<pcl::index_t> (hole.rim[nearest]);
   };
   const auto append = [&] (const Eigen::Vector3d& position) {
-    PointT point = nearestRimPoint (position);
+    new_point_sources_.push_back (nearestRimPoint (position));
+    PointT point = (*input_)[new_point_sources_.back()];
     point.x = static_cast<float> (position.x());
     point.y = static_cast<float> (position.y());
     point.z = static_cast<float> (position.z());
