@@ -1,12 +1,42 @@
 #include <pcl/tda/apps/data_set_folder.h>
 #include <pcl/exceptions.h>
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <string>
 #include <system_error>
 
 namespace pcl {
 namespace tda {
+
+namespace {
+
+constexpr char STAGING_PREFIX[] = ".staging.";
+
+/** Removes the staging folders in \a folder of runs that ended without removing
+ * theirs (killed by a signal): those whose process is gone. */
+void
+removeStaleStaging (const std::filesystem::path& folder)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  for (const auto& entry : fs::directory_iterator (folder, error)) {
+    const std::string name = entry.path().filename().string();
+    const std::string digits =
+        name.substr (std::min (name.size(), sizeof (STAGING_PREFIX) - 1));
+    if (name.rfind (STAGING_PREFIX, 0) != 0 || digits.empty() ||
+        digits.find_first_not_of ("0123456789") != std::string::npos ||
+        digits.size() > 9)
+      continue;
+    const auto process = static_cast<pid_t> (std::stol (digits));
+    if (process != ::getpid() && ::kill (process, 0) != 0 && errno == ESRCH)
+      fs::remove_all (entry.path(), error);
+  }
+}
+
+} // namespace
 
 DataSetFolder::DataSetFolder (const std::string& folder,
                               const std::vector<std::string>& names,
@@ -36,7 +66,8 @@ DataSetFolder::DataSetFolder (const std::string& folder,
                                                        << error.message());
     created_ = true;
   }
-  staging_ = folder_ / (".staging." + std::to_string (::getpid()));
+  removeStaleStaging (folder_);
+  staging_ = folder_ / (STAGING_PREFIX + std::to_string (::getpid()));
   if (!fs::create_directory (staging_, error))
     PCL_THROW_EXCEPTION (pcl::IOException,
                          "cannot write to the folder " << folder << ": "

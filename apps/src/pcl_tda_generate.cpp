@@ -109,9 +109,10 @@ printHelp (const char* program)
       MANIFEST);
   print_info ("  and the options are:\n");
   print_info (
-      "    -n N       = number of points of a shape, 1 to %ld (default: circle "
-      "1000,\n"
-      "                 torus 2500, sphere 1500); for tabletop and regions, about "
+      "    -n N       = number of points of a shape, up to %ld, enough for its "
+      "noise (default:\n"
+      "                 circle 1000, torus 2500, sphere 1500); for tabletop and "
+      "regions, about "
       "N samples on\n"
       "                 the table top, which sets the sampling density (default: "
       "one point per\n"
@@ -456,10 +457,23 @@ runTabletop (const Options& options,
     parameters.colour_regions = true;
     parameters.setNoise (pcl::tda::TABLETOP_MODERATE_NOISE);
   }
-  if (options.n > 0)
-    parameters.point_spacing =
-        static_cast<float> (std::sqrt (static_cast<double> (parameters.table_width) *
-                                       parameters.table_depth / options.n));
+  if (options.n > 0) {
+    const double area =
+        static_cast<double> (parameters.table_width) * parameters.table_depth;
+    const auto least =
+        static_cast<long> (std::ceil (area / (pcl::tda::TABLETOP_MAX_POINT_SPACING *
+                                              pcl::tda::TABLETOP_MAX_POINT_SPACING) -
+                                      1e-6));
+    if (options.n < least)
+      PCL_THROW_EXCEPTION (pcl::BadArgumentException,
+                           "Option -n needs at least "
+                               << least << " samples on the table top for "
+                               << options.kind << " (a point per "
+                               << pcl::tda::TABLETOP_MAX_POINT_SPACING * 100 << " cm x "
+                               << pcl::tda::TABLETOP_MAX_POINT_SPACING * 100
+                               << " cm), not '" << options.n << "'.");
+    parameters.point_spacing = static_cast<float> (std::sqrt (area / options.n));
+  }
   if (options.noise >= 0.0)
     parameters.noise_sigma = static_cast<float> (options.noise);
   if (options.colour_noise >= 0.0)

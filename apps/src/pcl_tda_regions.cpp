@@ -154,12 +154,14 @@ inputNormals (const pcl::PCLPointCloud2& blob,
     pcl::fromPCLPointCloud2 (blob, *normals);
     std::size_t invalid = 0;
     for (std::size_t i = 0; i < cloud.size(); ++i)
-      invalid += pcl::isXYZFinite (cloud[i]) && !pcl::isNormalFinite ((*normals)[i]);
+      invalid += pcl::isXYZFinite (cloud[i]) &&
+                 (!pcl::isNormalFinite ((*normals)[i]) ||
+                  (*normals)[i].getNormalVector3fMap().squaredNorm() == 0.0f);
     if (invalid > 0) {
       console.error (std::to_string (invalid) +
                      " points with a finite position have "
-                     "a non-finite normal in the input: use -no-normals, or remove "
-                     "the normal fields to have them estimated.");
+                     "a non-finite or zero normal in the input: use -no-normals, or "
+                     "remove the normal fields to have them estimated.");
       return false;
     }
     console.endStep (std::to_string (normals->size()) + " normals");

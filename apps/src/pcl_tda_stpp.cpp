@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <string>
@@ -39,7 +40,8 @@ printHelp (const char* program)
               "1; the CSV holds the others.\n");
   print_info ("  where options are:\n");
   print_info ("    -list F.txt    = also the files listed in F.txt, one path per "
-              "line\n");
+              "line (relative to\n                     the folder of F.txt; # starts "
+              "a comment line)\n");
   print_info ("    -descriptor D  = stpp (default: Betti 0 and 1), stpp0 (Betti 0), "
               "stpp1 (Betti 1)\n                     or covariance (the topological "
               "covariance descriptor; normals\n                     estimated)\n");
@@ -60,7 +62,10 @@ struct Options {
   long threads = 0;
 };
 
-/** The paths of the list file \a list, one per line (empty lines skipped).
+/** The paths of the list file \a list, one per line, without the spaces around
+ * them; relative paths are relative to the list's folder (as those of
+ * pcl_tda_classify's manifest). Blank lines and lines that start with # are
+ * skipped.
  * \throws pcl::IOException when it cannot be read */
 std::vector<std::string>
 readList (const std::string& list)
@@ -68,12 +73,16 @@ readList (const std::string& list)
   std::ifstream in (list);
   if (!in)
     PCL_THROW_EXCEPTION (pcl::IOException, "cannot read the list " << list);
+  const std::filesystem::path folder = std::filesystem::path (list).parent_path();
+  constexpr const char* SPACES = " \t\r";
   std::vector<std::string> paths;
   for (std::string line; std::getline (in, line);) {
-    if (!line.empty() && line.back() == '\r')
-      line.pop_back();
-    if (!line.empty())
-      paths.push_back (line);
+    const auto first = line.find_first_not_of (SPACES);
+    if (first == std::string::npos || line[first] == '#')
+      continue;
+    const std::filesystem::path path =
+        line.substr (first, line.find_last_not_of (SPACES) + 1 - first);
+    paths.push_back ((path.is_absolute() ? path : folder / path).string());
   }
   return paths;
 }

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 
 namespace pcl {
@@ -11,13 +12,24 @@ namespace tda {
 
 namespace {
 
+extern "C" void
+removeTemporaryFilesAndEnd (int signal)
+{
+  removeTemporaryFiles();
+  std::raise (signal); // the default action again (SA_RESETHAND)
+}
+
 /** True when writing to \a a and to \a b (links resolved) would write one file. */
 bool
 sameTarget (const std::string& a, const std::string& b)
 {
+  // Absolute first: a relative path to a file not there yet stays relative in
+  // weakly_canonical() (o.pcd), unless it starts with a folder that is (./o.pcd).
   std::error_code error_a, error_b;
-  const auto path_a = std::filesystem::weakly_canonical (linkTarget (a), error_a);
-  const auto path_b = std::filesystem::weakly_canonical (linkTarget (b), error_b);
+  const auto path_a = std::filesystem::weakly_canonical (
+      std::filesystem::absolute (linkTarget (a)), error_a);
+  const auto path_b = std::filesystem::weakly_canonical (
+      std::filesystem::absolute (linkTarget (b)), error_b);
   return (!error_a && !error_b && path_a == path_b) || isSameFile (a, b);
 }
 
@@ -91,6 +103,21 @@ ToolOutputs::commit()
 {
   for (const auto& file : files_)
     file->commit();
+}
+
+void
+removeTemporaryFilesOnSignals ()
+{
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    struct sigaction current;
+    if (::sigaction (signal, nullptr, &current) != 0 || current.sa_handler == SIG_IGN)
+      continue; // as nohup and background jobs set them
+    struct sigaction action = {};
+    action.sa_handler = removeTemporaryFilesAndEnd;
+    sigemptyset (&action.sa_mask);
+    action.sa_flags = SA_RESETHAND;
+    ::sigaction (signal, &action, nullptr);
+  }
 }
 
 } // namespace tda

@@ -11,6 +11,7 @@
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/features/stpp_estimation.h>
 #include <pcl/tda/features/topological_covariance_estimation.h>
+#include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/point_spacing.h>
 #include <pcl/exceptions.h>
 
@@ -18,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <numeric>
 #include <type_traits>
 
 namespace pcl {
@@ -305,10 +307,14 @@ computeViewDescriptors (const pcl::PointCloud<pcl::PointXYZRGB>& view,
   ViewInput input;
   input.seed = seed;
   input.topological = topological;
+  // The finite points in canonical order: PCL's normals (sums over neighbours in
+  // the order of the points) and descriptors then do not depend on the file's order.
+  pcl::Indices all (view.size());
+  std::iota (all.begin(), all.end(), 0);
+  std::size_t non_finite = 0;
   input.colored_points.reset (new ColorCloud);
-  for (const auto& point : view)
-    if (pcl::isXYZFinite (point))
-      input.colored_points->push_back (point);
+  for (const pcl::index_t index : canonicalOrder (view, all, non_finite))
+    input.colored_points->push_back (view[index]);
   input.colored_points->sensor_origin_ = view.sensor_origin_;
   input.colored_points->sensor_orientation_ = view.sensor_orientation_;
   input.points.reset (new Cloud);

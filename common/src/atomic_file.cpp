@@ -4,6 +4,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <array>
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -12,6 +14,36 @@
 
 namespace pcl {
 namespace tda {
+
+namespace {
+
+/** The temporary files of the live FileReplacement objects, for
+ * removeTemporaryFiles(): a fixed table, which a signal handler can read at any
+ * moment. */
+std::array<std::atomic<const char*>, 64> live_temporaries{};
+
+void
+addLiveTemporary (const char* path)
+{
+  for (auto& slot : live_temporaries) {
+    const char* empty = nullptr;
+    if (slot.compare_exchange_strong (empty, path))
+      return;
+  }
+  // More at once than the table holds: this one is not removed on a signal.
+}
+
+void
+removeLiveTemporary (const char* path)
+{
+  for (auto& slot : live_temporaries) {
+    const char* expected = path;
+    if (slot.compare_exchange_strong (expected, nullptr))
+      return;
+  }
+}
+
+} // namespace
 
 std::string
 linkTarget (const std::string& path)
@@ -33,10 +65,13 @@ FileReplacement::FileReplacement (const std::string& path)
 : path_ (path)
 , target_ (linkTarget (path))
 , temporary_ (target_ + ".tmp." + std::to_string (::getpid()))
-{}
+{
+  addLiveTemporary (temporary_.c_str());
+}
 
 FileReplacement::~FileReplacement()
 {
+  removeLiveTemporary (temporary_.c_str());
   if (!committed_)
     std::remove (temporary_.c_str());
 }
@@ -51,6 +86,15 @@ FileReplacement::commit()
     PCL_THROW_EXCEPTION (pcl::IOException,
                          "cannot replace " << path_ << ": " << std::strerror (errno));
   committed_ = true;
+  removeLiveTemporary (temporary_.c_str());
+}
+
+void
+removeTemporaryFiles () noexcept
+{
+  for (auto& slot : live_temporaries)
+    if (const char* path = slot.load())
+      ::unlink (path);
 }
 
 void

@@ -175,7 +175,7 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
   expectRefusal ("regions",
                  "double.pcd out.pcd",
                  "double.pcd's rgba field holds 1 value(s) of 8 byte(s) (F) per point");
-  // Normals in the file, one of them NaN at a finite point.
+  // Normals in the file, one of them NaN at a finite point; all of them zero.
   pcl::PointCloud<pcl::PointXYZRGBNormal> with_normals;
   pcl::io::loadPCDFile (path ("colour.pcd"), with_normals);
   for (auto& point : with_normals)
@@ -184,7 +184,13 @@ TEST_F (BadInputMatrix, MalformedInputFiles)
   pcl::io::savePCDFileBinary (path ("nan_normal.pcd"), with_normals);
   expectRefusal ("regions",
                  "nan_normal.pcd out.pcd",
-                 "1 points with a finite position have a non-finite normal");
+                 "1 points with a finite position have a non-finite or zero normal");
+  for (auto& point : with_normals)
+    point.normal_z = 0.0f;
+  pcl::io::savePCDFileBinary (path ("zero_normals.pcd"), with_normals);
+  expectRefusal ("regions",
+                 "zero_normals.pcd out.pcd",
+                 "200 points with a finite position have a non-finite or zero normal");
 }
 
 TEST_F (BadInputMatrix, BadOptions)
@@ -324,6 +330,11 @@ TEST_F (BadInputMatrix, BadOptions)
        "Option -noise needs a number >= 0 and <= 3.40282e+38, not 'abc'."},
       {"circle out.pcd -seed -1", "Option -seed needs an integer >= 0, not '-1'."},
       {"tabletop out.pcd -objects 99", "Option -objects needs an integer from 0 to 8"},
+      {"tabletop out.pcd -n 1749",
+       "Option -n needs at least 1750 samples on the table top for tabletop (a point "
+       "per 2 cm x 2 cm), not '1749'."},
+      {"regions out.pcd -n 10",
+       "Option -n needs at least 1750 samples on the table top for regions"},
       {"shapes set -instances 1000 -views 1000",
        "-instances 1000 x -views 1000 x 12 categories would be 12000000 views (files), "
        "over 1000000: use fewer instances or views."},
@@ -373,6 +384,9 @@ TEST_F (BadInputMatrix, BadOutputs)
        "-svg and -diagram name the same file old.svg"},
       {"good.pcd out.csv -radius 0.3 -export-phat ./out.csv",
        "output and -export-phat name the same file ./out.csv"},
+      // Files not there yet, spelled two ways.
+      {"good.pcd new.csv -radius 0.3 -svg n.svg -diagram ./n.svg",
+       "-svg and -diagram name the same file ./n.svg"},
       {"good.pcd out.csv -radius 0.3 -diagram circle_link.svg",
        "refusing to overwrite the input file good.pcd (-diagram)"},
       {"good.pcd circle_link.csv -radius 0.3",
@@ -412,6 +426,8 @@ TEST_F (BadInputMatrix, BadOutputs)
        "cannot write nodir/f.pcd: the folder nodir does not exist"},
       {"plain.pcd out.pcd -fill out.pcd",
        "output and -fill name the same file out.pcd"},
+      {"plain.pcd new.pcd -fill ./new.pcd",
+       "output and -fill name the same file ./new.pcd"},
       {"plain.pcd out.pcd -csv old.svg", "-csv needs a .csv file (got 'old.svg')."},
       {"plain.pcd out.pcd -fill plain.pcd",
        "refusing to overwrite the input file plain.pcd (-fill)"},

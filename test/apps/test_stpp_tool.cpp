@@ -13,9 +13,13 @@
 
 #include "tool_runner.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
+#include <numeric>
+#include <random>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -113,8 +117,11 @@ TEST (STPPTool, ReadsAListAndSelectsTheDescriptor)
 {
   const std::string folder = pcl::tda::test::temporaryFolder ("stpp_tool");
   const std::vector<std::string> paths = writeViews (folder);
+  // Relative to the list's folder, spaces around, a blank line and a comment.
   const std::string list = folder + "/files.txt";
-  std::ofstream (list) << paths[0] << "\n\n" << paths[1] << "\n";
+  std::ofstream (list) << "# views\n  " << paths[0] << " \t\n\n"
+                       << std::filesystem::path (paths[1]).filename().string()
+                       << "\r\n";
   const std::string csv = folder + "/out.csv";
   const RunResult result = runTool (csv + " " + paths[2] + " -list " + list +
                                     " -descriptor stpp1 -radius 0.004");
@@ -123,6 +130,7 @@ TEST (STPPTool, ReadsAListAndSelectsTheDescriptor)
   ASSERT_EQ (lines.size(), 4u);
   EXPECT_EQ (pcl::tda::splitCSVLine (lines[1])[0], paths[2]);
   EXPECT_EQ (pcl::tda::splitCSVLine (lines[2])[0], paths[0]);
+  EXPECT_EQ (pcl::tda::splitCSVLine (lines[3])[0], paths[1]);
   EXPECT_EQ (pcl::tda::splitCSVLine (lines[0]).size(),
              pcl::tda::STPP_SIZE_OFFSET - pcl::tda::STPP_BETTI1_OFFSET + 2);
 
@@ -132,6 +140,35 @@ TEST (STPPTool, ReadsAListAndSelectsTheDescriptor)
       0);
   EXPECT_EQ (pcl::tda::splitCSVLine (linesOf (covariance_csv)[0]).size(),
              pcl::tda::COVARIANCE_SIGNATURE_SIZE + 1);
+}
+
+// The descriptors do not depend on the order of a file's points: the covariance
+// descriptor's normals (PCL's, sums over neighbours in point order) included.
+TEST (STPPTool, SameValuesForShuffledPoints)
+{
+  const std::string folder = pcl::tda::test::temporaryFolder ("stpp_tool");
+  const std::vector<std::string> paths = writeViews (folder);
+  pcl::PointCloud<pcl::PointXYZRGB> view, shuffled;
+  ASSERT_EQ (pcl::io::loadPCDFile (paths[0], view), 0);
+  std::vector<std::size_t> order (view.size());
+  std::iota (order.begin(), order.end(), 0);
+  std::shuffle (order.begin(), order.end(), std::mt19937 (5));
+  for (const std::size_t i : order)
+    shuffled.push_back (view[i]);
+  const std::string shuffled_path = folder + "/shuffled.pcd";
+  pcl::io::savePCDFileBinary (shuffled_path, shuffled);
+  for (const std::string descriptor : {"covariance", "stpp"}) {
+    const std::string csv = folder + "/" + descriptor + ".csv";
+    ASSERT_EQ (runTool (csv + " " + paths[0] + " " + shuffled_path + " -descriptor " +
+                        descriptor)
+                   .exit_code,
+               0);
+    const std::vector<std::string> lines = linesOf (csv);
+    ASSERT_EQ (lines.size(), 3u);
+    EXPECT_EQ (lines[1].substr (lines[1].find (',')),
+               lines[2].substr (lines[2].find (',')))
+        << descriptor;
+  }
 }
 
 TEST (STPPTool, SkipsAFileThatFailsAndExitsNonZero)

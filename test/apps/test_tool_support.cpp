@@ -1,6 +1,7 @@
 // Tests of the tools' shared support: the strict command line, the output files
 // committed together (links and permission bits kept), and the voxel grid check.
 
+#include <pcl/tda/apps/data_set_folder.h>
 #include <pcl/tda/apps/tool_options.h>
 #include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/apps/voxel_grid_check.h>
@@ -10,8 +11,10 @@
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -245,6 +248,62 @@ TEST (ToolOutputs, CommitsTogetherKeepingLinksAndPermissions)
   EXPECT_EQ (std::distance (std::filesystem::directory_iterator (folder),
                             std::filesystem::directory_iterator()),
              3);
+}
+
+// A tool ended by a signal while it writes its outputs (removeTemporaryFilesOnSignals()
+// as runTool() calls it) leaves no temporary file, and ends by that signal.
+TEST (ToolOutputs, SignalsRemoveTheTemporaryFiles)
+{
+  const std::string folder = testFolder();
+  std::ofstream (folder + "/out.csv") << "old csv";
+  for (const int signal : {SIGINT, SIGTERM, SIGHUP}) {
+    const pid_t child = ::fork();
+    ASSERT_GE (child, 0);
+    if (child == 0) {
+      std::signal (signal, SIG_DFL); // as in a terminal (a test runner may ignore it)
+      removeTemporaryFilesOnSignals();
+      ToolOutputs outputs (
+          "", {{"output", folder + "/out.csv"}, {"-svg", folder + "/new.svg"}});
+      std::ofstream (outputs.temporary (folder + "/out.csv")) << "new csv";
+      // A writer's own temporary file beside the tool's, as the library's writers.
+      FileReplacement nested (outputs.temporary (folder + "/new.svg"));
+      std::ofstream (nested.temporary()) << "partial svg";
+      std::raise (signal);
+      ::_exit (0); // not reached
+    }
+    int status = 0;
+    ASSERT_EQ (::waitpid (child, &status, 0), child);
+    ASSERT_TRUE (WIFSIGNALED (status)) << signal;
+    EXPECT_EQ (WTERMSIG (status), signal);
+    std::vector<std::string> left;
+    for (const auto& entry : std::filesystem::directory_iterator (folder))
+      left.push_back (entry.path().filename().string());
+    EXPECT_EQ (left, std::vector<std::string>{"out.csv"}) << signal;
+    EXPECT_EQ (contentOf (folder + "/out.csv"), "old csv");
+  }
+}
+
+// The staging folder of a data set written by a run killed by a signal is removed
+// by the next run into the folder; that of a live process stays.
+TEST (DataSetFolder, NextRunRemovesTheStagingOfAKilledRun)
+{
+  const std::string folder = testFolder();
+  const pid_t ended = ::fork();
+  ASSERT_GE (ended, 0);
+  if (ended == 0)
+    ::_exit (0);
+  ASSERT_EQ (::waitpid (ended, nullptr, 0), ended);
+  const std::string stale = folder + "/.staging." + std::to_string (ended);
+  const std::string live = folder + "/.staging." + std::to_string (::getppid());
+  std::filesystem::create_directories (stale);
+  std::ofstream (stale + "/view_1.pcd") << "partial";
+  std::filesystem::create_directories (live);
+  {
+    DataSetFolder data_set (folder, {"a.txt"}, "manifest.csv");
+    EXPECT_FALSE (std::filesystem::exists (stale));
+    EXPECT_TRUE (std::filesystem::exists (live));
+  }
+  EXPECT_FALSE (std::filesystem::exists (stale));
 }
 
 TEST (VoxelGridCheck, RefusesLeavesPCLWouldIgnore)

@@ -483,7 +483,8 @@ TEST (PersistentRegionGrowingRGB, MinNeighborsJoinSparseRows)
 // surface of the same colour 20 cm behind it, with a lost pixel. The radius graph of
 // 3 mm cuts the rows into 12 strips; the image neighbours within 2% of the range
 // join the rows of each surface but not the two surfaces; an unorganized copy of
-// the points is not affected. Edges are added once each, longer than the radius.
+// the points (also one written as a column) is not affected. Edges are added once each,
+// longer than the radius.
 TEST (PersistentRegionGrowingRGB, ImageNeighborsJoinTheRowsOfADepthFrame)
 {
   const std::size_t width = 60, height = 12;
@@ -510,6 +511,15 @@ TEST (PersistentRegionGrowingRGB, ImageNeighborsJoinTheRowsOfADepthFrame)
   unorganized->width = static_cast<std::uint32_t> (unorganized->size());
   unorganized->height = 1;
   EXPECT_EQ (grow (growing, unorganized).size(), 12u);
+  // Nor a column (WIDTH 1): a list of points, here column by column, whose
+  // neighbours in the list (across the rows) joined before.
+  Cloud::Ptr column (new Cloud);
+  for (std::size_t x = 0; x < width; ++x)
+    for (std::size_t row = 0; row < height; ++row)
+      column->push_back (frame->at (x, row));
+  column->width = 1;
+  column->height = static_cast<std::uint32_t> (column->size());
+  EXPECT_EQ (grow (growing, column).size(), 12u);
 
   // The graph: the image neighbours, then the nearest points, each edge once.
   std::vector<Point3d> points;

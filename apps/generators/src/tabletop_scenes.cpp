@@ -27,8 +27,6 @@ constexpr double SPHERE_MIN_RADIUS = 0.03, SPHERE_MAX_RADIUS = 0.07;
 constexpr double MAX_OBJECT_HEIGHT = 0.20;
 /** Free border between the objects and the table edge, in metres. */
 constexpr double TABLE_MARGIN = 0.02;
-/** Largest sampling cell: the smallest object must still get a few points. */
-constexpr double MAX_POINT_SPACING = 0.02;
 /** Upper bound on the number of table samples, to refuse absurd densities. */
 constexpr double MAX_TABLE_SAMPLES = 5e7;
 constexpr int MAX_PLACEMENT_ATTEMPTS = 1000;
@@ -534,10 +532,11 @@ checkTabletopParameters (const TabletopParameters& parameters)
   checkLength (parameters.table_depth, name, "table depth");
   checkLength (parameters.point_spacing, name, "point spacing");
   checkLength (parameters.min_gap, name, "minimum gap");
-  if (parameters.point_spacing > MAX_POINT_SPACING)
+  if (parameters.point_spacing > TABLETOP_MAX_POINT_SPACING)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
-                         name << ": point spacing must be at most " << MAX_POINT_SPACING
-                              << " m, not " << parameters.point_spacing);
+                         name << ": point spacing must be at most "
+                              << TABLETOP_MAX_POINT_SPACING << " m, not "
+                              << parameters.point_spacing);
   const double table_samples =
       static_cast<double> (parameters.table_width) * parameters.table_depth /
       (static_cast<double> (parameters.point_spacing) * parameters.point_spacing);

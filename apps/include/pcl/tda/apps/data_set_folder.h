@@ -11,7 +11,9 @@ namespace tda {
  * pcl_tda_generate shapes and their manifest), all or nothing: the files are
  * written to a staging folder inside it, then moved in, the index (the manifest)
  * last, once every one is written. A run that fails (the object is destroyed
- * before commit()) leaves the folder as it was, and removes it when it created it.
+ * before commit()) leaves the folder as it was, and removes it when it created it;
+ * the staging folder of a run killed by a signal is removed by the next run into the
+ * folder.
  * Never replaces a file: refuses a folder that already holds the index or one of
  * the files. */
 class DataSetFolder {

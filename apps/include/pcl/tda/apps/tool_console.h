@@ -5,6 +5,7 @@
 #include <pcl/tda/apps/cloud_files.h>
 #include <pcl/tda/apps/huge_page_malloc.h>
 #include <pcl/tda/apps/tool_options.h>
+#include <pcl/tda/apps/tool_outputs.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
 
@@ -104,7 +105,9 @@ private:
 /** \brief The main() of a tool: "-h" or "--help" prints the help only and exits
  * with 0, fewer than \a least_arguments arguments print it, say so and exit with 1;
  * else has malloc reuse the memory the tool frees (reuseFreedMemory()) and back its
- * heap with huge pages (backHeapWithHugePages()); prints \a intro, reads the options
+ * heap with huge pages (backHeapWithHugePages()), has the signals that end it remove
+ * the temporary files of its outputs (removeTemporaryFilesOnSignals()); prints
+ * \a intro, reads the options
  * with \a parse and returns the exit code of \a run. A refusal (a
  * pcl::PCLException thrown by either) prints its message and exits with 1, and so
  * does running out of memory (std::bad_alloc) instead of aborting. */
@@ -137,6 +140,7 @@ runTool (int argc,
   }
   reuseFreedMemory();
   backHeapWithHugePages();
+  removeTemporaryFilesOnSignals();
   print_intro();
   ToolConsole console;
   try {

@@ -9,6 +9,12 @@
 namespace pcl {
 namespace tda {
 
+/** \brief Makes SIGINT, SIGTERM and SIGHUP (where not ignored) remove the temporary
+ * files of the outputs being written (removeTemporaryFiles()) before they end the
+ * process as they would have: an interrupted tool leaves no file behind. */
+void
+removeTemporaryFilesOnSignals ();
+
 /** \brief The output files of a tool run: checked before the work, written to
  * temporary files and committed together once everything succeeded, so that a
  * failed run changes no output. Links and permission bits of existing outputs are

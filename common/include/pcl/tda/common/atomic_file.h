@@ -17,7 +17,8 @@ linkTarget (const std::string& path);
  * whole new content, never a part: the new content goes to temporary(), beside the
  * file, and commit() renames it onto the file. A symbolic link at \a path stays a
  * link (the file it points to is replaced) and the replaced file's permission bits
- * are kept. The destructor removes a temporary file that was not committed. */
+ * are kept. The destructor removes a temporary file that was not committed; so
+ * does removeTemporaryFiles(), for a process ended by a signal. */
 class FileReplacement {
 public:
   /** \brief Names the temporary file; creates nothing. */
@@ -54,6 +55,12 @@ private:
   std::string temporary_;
   bool committed_ = false;
 };
+
+/** \brief Removes the temporary files of all FileReplacement objects alive (not yet
+ * committed or destroyed): for a handler of the signals that end a process
+ * (SIGINT, SIGTERM), which skips the destructors. Async-signal-safe. */
+void
+removeTemporaryFiles () noexcept;
 
 /** \brief Replaces a file at once (see FileReplacement): \a write_file writes the
  * temporary file whose name it is given, which then replaces \a path. \a write_file

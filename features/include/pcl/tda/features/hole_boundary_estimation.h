@@ -33,10 +33,14 @@ namespace tda {
  * around handles and tubes out).
  *
  * compute() gives one pcl::Boundary per index: boundary_point is 1 for the points of
- * the rim band: the rim's points and the points within the band width of a rim
- * segment (on the surface's side, as the hole's side is empty), the band
+ * the rim band: the points within the band width of the hole's edge, on the
+ * surface's side (measured from the hole's empty region, see rimBand()), the band
  * pcl::BoundaryEstimation flags along a border. getHoles() gives every hole's rim
- * in cycle order as input indices, with its perimeter, area, plane and birth.
+ * in cycle order as input indices, with its perimeter, area, plane and birth. A rim
+ * is a shortest cycle around the hole: it cuts corners, and on a scan with uneven
+ * sampling some of its points lie further from the edge than the band reaches (16
+ * of the 31 of the hole of milk.pcd), so take a hole's points from its rim, its
+ * band from the flags (getRimBandLabels()).
  *
  * On a closed surface (a sphere, a torus) with k holes there are only k - 1
  * independent hole classes besides the handles; the border polygons find the

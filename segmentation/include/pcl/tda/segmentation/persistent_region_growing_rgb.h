@@ -197,7 +197,8 @@ public:
    * from the cloud's sensor_origin_; addImageNeighbors()): the rows of a surface
    * seen at a grazing angle, farther apart than the max distance, then stay one
    * surface, while the jumps in depth at an object's outline stay cut. Unorganized
-   * inputs are not affected. */
+   * inputs are not affected, nor are those one pixel wide (a list of points written
+   * as a column, WIDTH 1: not an image). */
   void
   setImageNeighborRatio (double ratio)
   {

@@ -24,6 +24,9 @@ constexpr std::uint32_t TABLE_LABEL = 1;
 constexpr std::uint32_t FIRST_OBJECT_LABEL = 2;
 /** \brief Most objects a tabletop scene holds (one distinct colour each). */
 constexpr std::size_t MAX_TABLETOP_OBJECTS = 8;
+/** \brief The largest point spacing of a tabletop scene, in metres: the smallest
+ * object must still get a few points. */
+constexpr double TABLETOP_MAX_POINT_SPACING = 0.02;
 
 /** \brief Kind of primitive standing on the table of a tabletop scene. */
 enum class PrimitiveType { BOX, CYLINDER, SPHERE };

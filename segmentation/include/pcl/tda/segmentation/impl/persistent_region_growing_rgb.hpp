@@ -176,7 +176,7 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
         "[pcl::tda::%s::extract] The input has no point with a finite position%s "
         "(%zu points).\n",
         name,
-        normals_ ? " and normal" : "",
+        normals_ ? " and a finite, non-zero normal" : "",
         indices_->size());
     deinitCompute();
     return;
@@ -219,7 +219,7 @@ PersistentRegionGrowingRGB<PointT, NormalT>::extract (
     deinitCompute();
     return;
   }
-  if (image_neighbor_ratio_ > 0.0 && input_->isOrganized()) {
+  if (image_neighbor_ratio_ > 0.0 && input_->isOrganized() && input_->width > 1) {
     std::vector<SimplexIndex> vertex_of_pixel (input_->size(), INVALID_SIMPLEX);
     for (std::size_t v = 0; v < n; ++v)
       vertex_of_pixel[point_of[v]] = static_cast<SimplexIndex> (v);
