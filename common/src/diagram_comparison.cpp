@@ -260,6 +260,18 @@ compareDiagrams (const PersistenceDiagram& first,
     i = i_end;
     j = j_end;
   }
+  // An unmatched interval within the tolerance of a point of the diagonal (both
+  // values match its middle) is one the other tool, in its precision, had of length
+  // zero: dropped as well.
+  const auto nearDiagonal = [relative_tolerance] (const PersistenceInterval& interval) {
+    const double middle = 0.5 * (interval.birth + interval.death);
+    return valuesMatch (interval.birth, middle, relative_tolerance) &&
+           valuesMatch (interval.death, middle, relative_tolerance);
+  };
+  for (PersistenceDiagram* unmatched : {&result.only_in_first, &result.only_in_second})
+    unmatched->erase (
+        std::remove_if (unmatched->begin(), unmatched->end(), nearDiagonal),
+        unmatched->end());
   result.equal = result.only_in_first.empty() && result.only_in_second.empty();
   return result;
 }

@@ -140,6 +140,27 @@ TEST (DiagramComparison, ZeroAndNearZeroLengthIntervalsAreDropped)
   EXPECT_FALSE (compareDiagrams (with_zero, other_zero).equal);
 }
 
+// car6.pcd at degree 10: our H1 [0.10049934835, 0.10050039221) is 1.04e-5 of its
+// death long, kept; Ripser prints it with 6 digits, [0.100499, 0.1005), 9.95e-6 long,
+// dropped. Unmatched and within the tolerance of the diagonal, ours is dropped too;
+// one twice as long is kept.
+TEST (DiagramComparison, UnmatchedIntervalsWithinTheToleranceOfTheDiagonalAreDropped)
+{
+  PersistenceDiagram ours = sampleDiagram(), ripser = sampleDiagram();
+  ours.push_back ({1, 0.10049934835423416, 0.10050039221228847});
+  ripser.push_back ({1, 0.100499, 0.1005});
+  pcl::tda::DiagramComparison result = compareDiagrams (ours, ripser);
+  EXPECT_TRUE (result.equal) << result.summary();
+  EXPECT_EQ (result.matched, sampleDiagram().size());
+  result = compareDiagrams (ripser, ours);
+  EXPECT_TRUE (result.equal) << result.summary();
+
+  ours.push_back ({1, 0.1004993, 0.1005015});
+  result = compareDiagrams (ours, ripser);
+  EXPECT_FALSE (result.equal);
+  expectSameIntervals ({{1, 0.1004993, 0.1005015}}, result.only_in_first);
+}
+
 TEST (DiagramComparison, AbsoluteFloorMatchesZeroWithTinyValues)
 {
   const auto result = compareDiagrams ({{1, 0.0, 1.0}}, {{1, 1e-300, 1.0}});

@@ -35,7 +35,11 @@ struct DiagramComparison {
  * death are dropped from both diagrams first, since tools break ties differently.
  * Each interval of \a first, in (birth, death) order, is matched to the unmatched
  * interval of \a second of the same dimension with matching birth whose matching
- * death is closest to its own. Runs in O(n log n).
+ * death is closest to its own. An interval left unmatched whose birth and death both
+ * match its middle (up to twice the tolerance long) is dropped too: the other tool,
+ * in its precision, may have had it of length zero (Ripser prints 6 digits: its
+ * [0.100499, 0.1005) is dropped first, our [0.1004993, 0.1005004) was not). Runs in
+ * O(n log n).
  * \param[in] relative_tolerance in [0, 1); Ripser computes distances in float,
  * hence the default 1e-5
  * \throws pcl::BadArgumentException for a tolerance outside [0, 1) or a NaN value
