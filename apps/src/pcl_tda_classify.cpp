@@ -327,7 +327,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
                    std::to_string (manifest.categories.size()) + " categories");
 
   console.beginStep ("Computing descriptors",
-                     std::to_string (names.size()) + " on " +
+                     pcl::tda::countOf (names.size(), "descriptor") + ", " +
                          std::to_string (omp_get_max_threads()) + " threads");
   std::vector<std::vector<pcl::tda::ViewDescriptor>> computed;
   if (!computeDescriptors (manifest, names, console, computed))
@@ -370,6 +370,12 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   console.endStep (std::to_string (specs.size()) + " descriptors");
   printTable (summaries);
 
+  std::size_t files = 0;
+  for (const std::string* path :
+       {&options.csv, &options.features, &options.svg, &options.png})
+    files += !path->empty();
+  if (files == 0)
+    return 0; // the table above is the result
   console.beginStep ("Saving");
   try {
     writeOutputs (options, outputs, manifest, names, computed, summaries);
@@ -379,7 +385,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     console.error (pcl::tda::errorMessage (error));
     return 1;
   }
-  console.endStep ("done");
+  console.endStep (pcl::tda::countOf (files, "file"));
   return 0;
 }
 

@@ -16,6 +16,7 @@
 #include <pcl/exceptions.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -69,14 +70,32 @@ fail (const std::string& reason)
   PCL_THROW_EXCEPTION (pcl::ComputeFailedException, reason);
 }
 
-/** Fails for the topological descriptor \a name, which gave no output. */
+/** Fails for the topological descriptor \a name, which gave no output for
+ * \a points, saying why (the class's own message is not printed while the views
+ * are described in parallel). */
+template <typename PointT>
 [[noreturn]] void
-failTopological (const std::string& name)
+failTopological (const std::string& name,
+                 const pcl::PointCloud<PointT>& points,
+                 const TopologicalSettings& settings)
 {
-  fail (name + " gave no signature (fewer than " +
-        std::to_string (SURFACE_SPACING_NEIGHBORS + 1) +
-        " distinct finite points, or a complex over the memory limit: a smaller "
-        "-radius or a larger -memory)");
+  std::vector<std::array<float, 3>> positions;
+  for (const PointT& p : points)
+    if (pcl::isXYZFinite (p))
+      positions.push_back ({p.x, p.y, p.z});
+  std::sort (positions.begin(), positions.end());
+  const auto distinct = static_cast<std::size_t> (
+      std::unique (positions.begin(), positions.end()) - positions.begin());
+  if (distinct <= SURFACE_SPACING_NEIGHBORS)
+    fail (name + " gave no signature: " + std::to_string (distinct) +
+          " distinct finite points, at least " +
+          std::to_string (SURFACE_SPACING_NEIGHBORS + 1) + " are needed");
+  fail (name +
+        " gave no signature: its complex could not be built, over the memory "
+        "limit of " +
+        formatBytes (static_cast<double> (settings.memory_limit)) +
+        " (a smaller -radius or a larger -memory), or for a -radius too small for "
+        "the cloud's extent");
 }
 
 /** Estimates the normals of \a input (pcl::NormalEstimation) and keeps the points
@@ -209,7 +228,7 @@ stpp (const ViewInput& input, STPPHomology homology)
   pcl::PointCloud<STPPSignature> output;
   estimation.compute (output);
   if (output.size() != 1)
-    failTopological ("STPP");
+    failTopological ("STPP", *input.points, input.topological);
   checkToolCoordinates (*input.points, estimation.getLevelRadii().front(), "radius");
   return stppSignatureValues (output[0], homology);
 }
@@ -227,7 +246,9 @@ covariance (const ViewInput& input)
   pcl::PointCloud<CovarianceSignature> output;
   estimation.compute (output);
   if (output.size() != 1)
-    failTopological ("The topological covariance descriptor");
+    failTopological ("The topological covariance descriptor",
+                     *input.colored_surface,
+                     input.topological);
   checkToolCoordinates (*input.colored_surface, estimation.getUsedRadius(), "radius");
   return singleHistogram (output, "covariance");
 }

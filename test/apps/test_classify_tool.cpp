@@ -182,7 +182,7 @@ TEST (ClassifyTool, GivesTheSameResultsOnAnyNumberOfThreads)
         "-threads " + std::to_string (threads) + " -csv " + csv + " -features " +
         table);
     ASSERT_EQ (result.exit_code, 0) << result.output;
-    EXPECT_NE (result.output.find ("on " + std::to_string (threads) + " threads"),
+    EXPECT_NE (result.output.find (", " + std::to_string (threads) + " threads"),
                std::string::npos);
     results[threads - 1] = readResults (csv);
     features[threads - 1] = contentOf (table);

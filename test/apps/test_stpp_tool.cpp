@@ -204,8 +204,9 @@ TEST (STPPTool, RefusesComplexesOverTheMemoryLimit)
         csv + " " + paths[0] + " -radius 0.01 -threads 1 -descriptor " + descriptor;
     const RunResult refused = runTool (arguments + " -memory 1");
     EXPECT_EQ (refused.exit_code, 1) << refused.output;
-    EXPECT_NE (refused.output.find ("over the memory limit: a smaller -radius or a "
-                                    "larger -memory"),
+    EXPECT_NE (refused.output.find ("its complex could not be built, over the memory "
+                                    "limit of 1.0 MiB (a smaller -radius or a larger "
+                                    "-memory)"),
                std::string::npos)
         << refused.output;
     EXPECT_FALSE (exists (csv));
