@@ -28,16 +28,10 @@ withNewPoints (const pcl::PCLPointCloud2& input,
                                << names[axis]);
     offsets[axis] = static_cast<int> (input.fields[field].offset);
   }
-  pcl::PCLPointCloud2 output;
-  output.header = input.header;
-  output.fields = input.fields;
-  output.is_bigendian = input.is_bigendian;
-  output.is_dense = input.is_dense;
-  output.point_step = input.point_step;
+  pcl::PCLPointCloud2 output = input; // then one row, with room for the new points
   output.height = 1;
   output.width = static_cast<pcl::uindex_t> (positions.size());
   output.row_step = output.point_step * output.width;
-  output.data = input.data;
   output.data.resize (std::size_t{output.row_step});
   for (std::size_t k = 0; k < sources.size(); ++k) {
     const auto source = static_cast<std::size_t> (sources[k]);
