@@ -22,23 +22,15 @@ namespace {
  * moment. */
 std::array<std::atomic<const char*>, 64> live_temporaries{};
 
+/** Puts \a to in the first slot of live_temporaries that holds \a from (nullptr: a
+ * free slot); none when there is no such slot (a table full: that temporary file is
+ * not removed on a signal). */
 void
-addLiveTemporary (const char* path)
+replaceLiveTemporary (const char* from, const char* to)
 {
   for (auto& slot : live_temporaries) {
-    const char* empty = nullptr;
-    if (slot.compare_exchange_strong (empty, path))
-      return;
-  }
-  // More at once than the table holds: this one is not removed on a signal.
-}
-
-void
-removeLiveTemporary (const char* path)
-{
-  for (auto& slot : live_temporaries) {
-    const char* expected = path;
-    if (slot.compare_exchange_strong (expected, nullptr))
+    const char* expected = from;
+    if (slot.compare_exchange_strong (expected, to))
       return;
   }
 }
@@ -66,12 +58,12 @@ FileReplacement::FileReplacement (const std::string& path)
 , target_ (linkTarget (path))
 , temporary_ (target_ + ".tmp." + std::to_string (::getpid()))
 {
-  addLiveTemporary (temporary_.c_str());
+  replaceLiveTemporary (nullptr, temporary_.c_str());
 }
 
 FileReplacement::~FileReplacement()
 {
-  removeLiveTemporary (temporary_.c_str());
+  replaceLiveTemporary (temporary_.c_str(), nullptr);
   if (!committed_)
     std::remove (temporary_.c_str());
 }
@@ -86,7 +78,7 @@ FileReplacement::commit()
     PCL_THROW_EXCEPTION (pcl::IOException,
                          "cannot replace " << path_ << ": " << std::strerror (errno));
   committed_ = true;
-  removeLiveTemporary (temporary_.c_str());
+  replaceLiveTemporary (temporary_.c_str(), nullptr);
 }
 
 void
