@@ -185,9 +185,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   if (!blob.data.empty())
     pcl::fromPCLPointCloud2 (blob, *cloud);
   console.endStep (std::to_string (cloud->size()) + " points");
-  const double radius = options.radius > 0.0 ? options.radius
-                                             : Estimation::AUTO_RADIUS_PER_SPACING *
-                                                   pcl::tda::surfaceSpacing (*cloud);
+  // Measured once, for the check of the coordinates and for the estimation.
+  const double spacing = options.radius > 0.0 ? 0.0 : pcl::tda::surfaceSpacing (*cloud);
+  const double radius = options.radius > 0.0
+                            ? options.radius
+                            : Estimation::AUTO_RADIUS_PER_SPACING * spacing;
   if (radius > 0.0) // else the estimation says there are too few points
     pcl::tda::checkToolCoordinates (
         *cloud,
@@ -197,6 +199,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   Estimation estimation;
   estimation.setInputCloud (cloud);
   estimation.setRadius (options.radius);
+  estimation.setSpacing (spacing);
   estimation.setMinHoleRadius (options.min_hole_radius);
   estimation.setMaxCycleLength (static_cast<std::size_t> (options.max_cycle));
   estimation.setMemoryLimit (options.memory_limit);

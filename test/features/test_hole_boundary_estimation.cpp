@@ -6,6 +6,7 @@
 #include <pcl/tda/common/persistence_engines.h>
 #include <pcl/tda/features/hole_boundary_estimation.h>
 #include <pcl/tda/generators/hole_surfaces.h>
+#include <pcl/tda/search/point_spacing.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/point_types.h>
 
@@ -387,6 +388,34 @@ TEST (HoleBoundaryEstimation, SameHolesInAnyUnit)
   }
 }
 
+// The spacing a caller measured (as pcl_tda_holes does to check its radius) gives the
+// same results as the one compute() measures; another spacing scales the automatic
+// radius with it.
+TEST (HoleBoundaryEstimation, GivenSpacingAsMeasured)
+{
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 3, 0.1f);
+  const auto cloud = positionsOf (surface);
+  Estimation measured, given;
+  measured.setInputCloud (cloud);
+  given.setInputCloud (cloud);
+  given.setSpacing (pcl::tda::surfaceSpacing (*cloud));
+  pcl::PointCloud<pcl::Boundary> expected, flags;
+  measured.compute (expected);
+  given.compute (flags);
+  ASSERT_EQ (countHoles (measured.getHoles(), surface).matched, surface.holes.size());
+  EXPECT_EQ (given.getUsedRadius(), measured.getUsedRadius());
+  ASSERT_EQ (flags.size(), expected.size());
+  for (std::size_t k = 0; k < flags.size(); ++k)
+    ASSERT_EQ (flags[k].boundary_point, expected[k].boundary_point) << k;
+  ASSERT_EQ (given.getHoles().size(), measured.getHoles().size());
+  for (std::size_t h = 0; h < measured.getHoles().size(); ++h)
+    EXPECT_EQ (given.getHoles()[h].rim, measured.getHoles()[h].rim);
+
+  given.setSpacing (1.5 * given.getSpacing());
+  given.compute (flags);
+  EXPECT_DOUBLE_EQ (given.getUsedRadius(), 1.5 * measured.getUsedRadius());
+}
+
 TEST (HoleBoundaryEstimation, IndicesSubsetAndNonFinitePoints)
 {
   const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 2);
@@ -476,6 +505,12 @@ TEST (HoleBoundaryEstimation, BadInputGivesEmptyOutput)
     estimation.setInputCloud (cloud);
     estimation.setMinHoleRadius (-0.1);
     EXPECT_TRUE (fails (estimation));
+  }
+  for (const double spacing : {-0.01, std::numeric_limits<double>::infinity()}) {
+    Estimation estimation;
+    estimation.setInputCloud (cloud);
+    estimation.setSpacing (spacing);
+    EXPECT_TRUE (fails (estimation)) << spacing;
   }
   {
     Estimation estimation;

@@ -163,6 +163,22 @@ public:
     return min_hole_radius_;
   }
 
+  /** \brief Sets the surface spacing h that the automatic radius, band width and
+   * smallest hole radius are measured in, e.g. one a caller measured already to
+   * choose or check a radius; 0 (the default): surfaceSpacing() of the indexed
+   * points, measured by compute() (the same value). */
+  void
+  setSpacing (double spacing)
+  {
+    spacing_ = spacing;
+  }
+
+  double
+  getSpacing () const
+  {
+    return spacing_;
+  }
+
   /** \brief Sets the width of the flagged rim band (see rimBand()), at most the
    * radius; 0 (the default): AUTO_BAND_PER_SPACING times the surface spacing, capped
    * at the radius. */
@@ -292,6 +308,7 @@ private:
   clearResults ();
 
   double radius_ = 0.0;
+  double spacing_ = 0.0;
   std::size_t max_cycle_length_ = 0;
   double max_tilt_degrees_ = DEFAULT_MAX_TILT_DEGREES;
   double band_width_ = 0.0;

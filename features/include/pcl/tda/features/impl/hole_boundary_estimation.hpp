@@ -39,7 +39,8 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
                max_tilt_degrees_);
     return false;
   }
-  return checkOptionalLength (
+  return checkOptionalLength (spacing_, getClassName(), "spacing", "to measure it") &&
+         checkOptionalLength (
              min_hole_radius_, getClassName(), "min hole radius", "for the default") &&
          checkOptionalLength (
              band_width_, getClassName(), "rim band width", "to choose it");
@@ -62,7 +63,9 @@ bool
 HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
 {
   const pcl::PointCloud<PointInT> points (*input_, *indices_);
-  const double spacing = surfaceSpacing (points, DEFAULT_SPACING_SAMPLES, threads_);
+  const double spacing =
+      spacing_ > 0.0 ? spacing_
+                     : surfaceSpacing (points, DEFAULT_SPACING_SAMPLES, threads_);
   if (!(spacing > 0.0)) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has fewer than %zu distinct finite "
                "points (%zu indexed): there is no surface.\n",
