@@ -82,6 +82,21 @@ countHoles (const std::vector<pcl::tda::HoleRim>& rims, const HoleSurface& surfa
   return counts;
 }
 
+/** Expects the same flags, point by point, and the same rims from two runs. */
+void
+expectSameResults (const pcl::PointCloud<pcl::Boundary>& expected_flags,
+                   const Estimation& expected,
+                   const pcl::PointCloud<pcl::Boundary>& flags,
+                   const Estimation& estimation)
+{
+  ASSERT_EQ (flags.size(), expected_flags.size());
+  for (std::size_t k = 0; k < flags.size(); ++k)
+    ASSERT_EQ (flags[k].boundary_point, expected_flags[k].boundary_point) << k;
+  ASSERT_EQ (estimation.getHoles().size(), expected.getHoles().size());
+  for (std::size_t h = 0; h < expected.getHoles().size(); ++h)
+    EXPECT_EQ (estimation.getHoles()[h].rim, expected.getHoles()[h].rim);
+}
+
 TEST (HoleBoundaryEstimation, OpenPatchesEveryHoleAndNothingElse)
 {
   for (const HoleSurfaceKind kind :
@@ -379,12 +394,7 @@ TEST (HoleBoundaryEstimation, SameHolesInAnyUnit)
     estimation.setInputCloud (scaled);
     pcl::PointCloud<pcl::Boundary> flags;
     estimation.compute (flags);
-    ASSERT_EQ (flags.size(), expected.size());
-    for (std::size_t k = 0; k < flags.size(); ++k)
-      ASSERT_EQ (flags[k].boundary_point, expected[k].boundary_point) << k;
-    ASSERT_EQ (estimation.getHoles().size(), reference.getHoles().size());
-    for (std::size_t h = 0; h < reference.getHoles().size(); ++h)
-      EXPECT_EQ (estimation.getHoles()[h].rim, reference.getHoles()[h].rim);
+    expectSameResults (expected, reference, flags, estimation);
   }
 }
 
@@ -404,12 +414,7 @@ TEST (HoleBoundaryEstimation, GivenSpacingAsMeasured)
   given.compute (flags);
   ASSERT_EQ (countHoles (measured.getHoles(), surface).matched, surface.holes.size());
   EXPECT_EQ (given.getUsedRadius(), measured.getUsedRadius());
-  ASSERT_EQ (flags.size(), expected.size());
-  for (std::size_t k = 0; k < flags.size(); ++k)
-    ASSERT_EQ (flags[k].boundary_point, expected[k].boundary_point) << k;
-  ASSERT_EQ (given.getHoles().size(), measured.getHoles().size());
-  for (std::size_t h = 0; h < measured.getHoles().size(); ++h)
-    EXPECT_EQ (given.getHoles()[h].rim, measured.getHoles()[h].rim);
+  expectSameResults (expected, measured, flags, given);
 
   given.setSpacing (1.5 * given.getSpacing());
   given.compute (flags);
