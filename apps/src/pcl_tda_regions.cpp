@@ -16,6 +16,7 @@
 #include <pcl/tda/common/persistence_plots.h>
 #include <pcl/tda/common/progress_bar.h>
 #include <pcl/tda/common/system_memory.h>
+#include <pcl/tda/segmentation/persistent_region_growing_rgb.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
@@ -154,9 +155,8 @@ inputNormals (const pcl::PCLPointCloud2& blob,
     pcl::fromPCLPointCloud2 (blob, *normals);
     std::size_t invalid = 0;
     for (std::size_t i = 0; i < cloud.size(); ++i)
-      invalid += pcl::isXYZFinite (cloud[i]) &&
-                 (!pcl::isNormalFinite ((*normals)[i]) ||
-                  (*normals)[i].getNormalVector3fMap().squaredNorm() == 0.0f);
+      invalid +=
+          pcl::isXYZFinite (cloud[i]) && !pcl::tda::isUsableNormal ((*normals)[i]);
     if (invalid > 0) {
       console.error (std::to_string (invalid) +
                      " points with a finite position have "

@@ -16,7 +16,6 @@
 #include <pcl/exceptions.h>
 
 #include <algorithm>
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -79,13 +78,7 @@ failTopological (const std::string& name,
                  const pcl::PointCloud<PointT>& points,
                  const TopologicalSettings& settings)
 {
-  std::vector<std::array<float, 3>> positions;
-  for (const PointT& p : points)
-    if (pcl::isXYZFinite (p))
-      positions.push_back ({p.x, p.y, p.z});
-  std::sort (positions.begin(), positions.end());
-  const auto distinct = static_cast<std::size_t> (
-      std::unique (positions.begin(), positions.end()) - positions.begin());
+  const std::size_t distinct = countFinitePositions (points).distinct;
   if (distinct <= SURFACE_SPACING_NEIGHBORS)
     fail (name + " gave no signature: " + std::to_string (distinct) +
           " distinct finite points, at least " +

@@ -28,16 +28,22 @@ floatResolution (double magnitude)
   return magnitude > 0.0 ? std::ldexp (powerOfTwoScale (magnitude), -24) : 0.0;
 }
 
-/** \brief The smallest length scale the coordinates of \a cloud resolve, as
- * checkToolCoordinates() requires of a tool's radius or leaf: the float resolution
- * at its largest coordinate divided by MAX_RESOLUTION_PER_SCALE (0 for a cloud with
+/** \brief The smallest length scale that coordinates up to \a magnitude (>= 0)
+ * resolve, as checkToolCoordinates() requires of a tool's radius or leaf: the float
+ * resolution there divided by MAX_RESOLUTION_PER_SCALE. */
+inline double
+resolvedScale (double magnitude)
+{
+  return floatResolution (magnitude) / MAX_RESOLUTION_PER_SCALE;
+}
+
+/** \brief resolvedScale() at the largest coordinate of \a cloud (0 for a cloud with
  * no finite point, or at the origin). */
 template <typename PointT>
 double
 smallestResolvedScale (const pcl::PointCloud<PointT>& cloud)
 {
-  return floatResolution (std::max (largestCoordinate (cloud), 0.0)) /
-         MAX_RESOLUTION_PER_SCALE;
+  return resolvedScale (std::max (largestCoordinate (cloud), 0.0));
 }
 
 /** \brief Checks a tool's input before the work: it has a finite point, and its
@@ -59,7 +65,7 @@ checkToolCoordinates (const pcl::PointCloud<PointT>& cloud,
                          "The input has no finite point (all "
                              << cloud.size() << " are NaN or infinite).");
   const double resolution = floatResolution (largest);
-  if (smallestResolvedScale (cloud) > scale)
+  if (resolvedScale (largest) > scale)
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "The coordinates reach "
                              << largest
@@ -76,6 +82,26 @@ checkToolCoordinates (const pcl::PointCloud<PointT>& cloud,
  * of them: 1 %. */
 constexpr double COINCIDENT_SHARE_TO_MENTION = 0.01;
 
+/** \brief The finite points of \a cloud: how many, and how many distinct positions
+ * they take. */
+struct FinitePositions {
+  std::size_t finite = 0;
+  std::size_t distinct = 0;
+};
+
+template <typename PointT>
+FinitePositions
+countFinitePositions (const pcl::PointCloud<PointT>& cloud)
+{
+  std::vector<std::array<float, 3>> positions;
+  for (const PointT& point : cloud)
+    if (pcl::isXYZFinite (point))
+      positions.push_back ({point.x, point.y, point.z});
+  std::sort (positions.begin(), positions.end());
+  const auto distinct = std::unique (positions.begin(), positions.end());
+  return {positions.size(), static_cast<std::size_t> (distinct - positions.begin())};
+}
+
 /** \brief Advice for a complex refused as too large, when at least
  * COINCIDENT_SHARE_TO_MENTION of the finite points of \a cloud share their position
  * with another (such as the invalid pixels some drivers write as 0, 0, 0: every
@@ -84,18 +110,12 @@ template <typename PointT>
 std::string
 coincidentPointsAdvice (const pcl::PointCloud<PointT>& cloud)
 {
-  std::vector<std::array<float, 3>> positions;
-  for (const PointT& point : cloud)
-    if (pcl::isXYZFinite (point))
-      positions.push_back ({point.x, point.y, point.z});
-  std::sort (positions.begin(), positions.end());
-  std::size_t coincident = 0;
-  for (std::size_t i = 1; i < positions.size(); ++i)
-    coincident += positions[i] == positions[i - 1];
+  const FinitePositions positions = countFinitePositions (cloud);
+  const std::size_t coincident = positions.finite - positions.distinct;
   if (coincident == 0 ||
-      coincident < COINCIDENT_SHARE_TO_MENTION * static_cast<double> (positions.size()))
+      coincident < COINCIDENT_SHARE_TO_MENTION * static_cast<double> (positions.finite))
     return "";
-  return std::to_string (coincident) + " of the " + std::to_string (positions.size()) +
+  return std::to_string (coincident) + " of the " + std::to_string (positions.finite) +
          " points repeat the position of another (invalid pixels written as 0, 0, "
          "0?): every pair of them is an edge at any radius. Remove them, or merge "
          "them with a voxel grid.";

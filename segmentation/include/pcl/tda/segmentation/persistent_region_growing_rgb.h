@@ -1,5 +1,6 @@
 #pragma once
 
+#include <pcl/common/point_tests.h>
 #include <pcl/tda/common/filtered_complex.h>
 #include <pcl/tda/common/persistence_diagram.h>
 #include <pcl/tda/common/progress.h>
@@ -19,6 +20,16 @@
 
 namespace pcl {
 namespace tda {
+
+/** \brief Whether \a normal can orient its point in PersistentRegionGrowingRGB:
+ * finite and not zero (a point without one is left out when normals are given). */
+template <typename NormalT>
+bool
+isUsableNormal (const NormalT& normal)
+{
+  return pcl::isNormalFinite (normal) &&
+         normal.getNormalVector3fMap().squaredNorm() > 0.0f;
+}
 
 /** \brief Region growing on colour and normals by topological persistence (thesis
  * Sec 4.2, Alg 4.7): a seed-free, order-independent drop-in beside

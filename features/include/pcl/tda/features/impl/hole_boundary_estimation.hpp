@@ -62,10 +62,11 @@ template <typename PointInT, typename PointOutT>
 bool
 HoleBoundaryEstimation<PointInT, PointOutT>::findHoles()
 {
-  const pcl::PointCloud<PointInT> points (*input_, *indices_);
   const double spacing =
       spacing_ > 0.0 ? spacing_
-                     : surfaceSpacing (points, DEFAULT_SPACING_SAMPLES, threads_);
+                     : surfaceSpacing (pcl::PointCloud<PointInT> (*input_, *indices_),
+                                       DEFAULT_SPACING_SAMPLES,
+                                       threads_);
   if (!(spacing > 0.0)) {
     PCL_ERROR ("[pcl::tda::%s::compute] The input has fewer than %zu distinct finite "
                "points (%zu indexed): there is no surface.\n",

@@ -113,12 +113,8 @@ PersistentRegionGrowingRGB<PointT, NormalT>::gatherVertices (
   for (const auto index : *indices_) {
     if (!pcl::isXYZFinite ((*input_)[index]))
       continue;
-    if (normals_) {
-      const NormalT& normal = (*normals_)[index];
-      if (!pcl::isNormalFinite (normal) ||
-          normal.getNormalVector3fMap().squaredNorm() == 0.0f)
-        continue;
-    }
+    if (normals_ && !isUsableNormal ((*normals_)[index]))
+      continue;
     point_of.push_back (index);
   }
   num_skipped_points_ = indices_->size() - point_of.size();
