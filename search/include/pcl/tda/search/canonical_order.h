@@ -4,13 +4,24 @@
 #include <pcl/point_cloud.h>
 #include <pcl/types.h>
 
-#include <algorithm>
 #include <cstddef>
-#include <tuple>
 #include <vector>
 
 namespace pcl {
 namespace tda {
+
+/** \brief A point as canonicalOrder() sorts it: its coordinates and its index. */
+struct CanonicalPoint {
+  float x, y, z;
+  pcl::index_t index;
+};
+
+/** \brief Sorts \a points by (x, y, z), then by index, in linear time (a radix
+ * sort: a comparison sort took a tenth of the Vietoris-Rips build of a 100k-point
+ * scan). 0 and -0 are equal. The result does not depend on \a threads (OpenMP threads,
+ * 0: OpenMP's default). */
+void
+sortCanonically (std::vector<CanonicalPoint>& points, unsigned int threads = 0);
 
 /** \brief The canonical vertex order of the complex builders (thesis Alg 3.2): the
  * finite points among \a indices, sorted by (x, y, z) and then by index, so that a
@@ -26,17 +37,16 @@ canonicalOrder (const pcl::PointCloud<PointT>& cloud,
                 const pcl::Indices& indices,
                 std::size_t& skipped)
 {
-  pcl::Indices order;
-  order.reserve (indices.size());
+  std::vector<CanonicalPoint> points;
+  points.reserve (indices.size());
   for (const auto index : indices)
     if (pcl::isXYZFinite (cloud[index]))
-      order.push_back (index);
-  skipped = indices.size() - order.size();
-  std::sort (order.begin(), order.end(), [&cloud] (pcl::index_t a, pcl::index_t b) {
-    const PointT& p = cloud[a];
-    const PointT& q = cloud[b];
-    return std::tie (p.x, p.y, p.z, a) < std::tie (q.x, q.y, q.z, b);
-  });
+      points.push_back ({cloud[index].x, cloud[index].y, cloud[index].z, index});
+  skipped = indices.size() - points.size();
+  sortCanonically (points);
+  pcl::Indices order (points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+    order[i] = points[i].index;
   return order;
 }
 
