@@ -1,7 +1,6 @@
 #include <pcl/tda/apps/classification_tables.h>
 #include <pcl/tda/apps/csv_fields.h>
 
-#include <charconv>
 #include <map>
 #include <tuple>
 
@@ -21,20 +20,6 @@ perTrial (const DescriptorOutcome& outcome, Value value)
 }
 
 } // namespace
-
-std::string
-formatNumber (double value)
-{
-  char buffer[32];
-  return {buffer, std::to_chars (buffer, buffer + sizeof (buffer), value).ptr};
-}
-
-std::string
-formatNumber (float value)
-{
-  char buffer[32];
-  return {buffer, std::to_chars (buffer, buffer + sizeof (buffer), value).ptr};
-}
 
 std::pair<SVMParameters, std::size_t>
 mostChosen (const DescriptorOutcome& outcome)

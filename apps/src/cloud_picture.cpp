@@ -54,59 +54,63 @@ drawProjected (const pcl::PointCloud<pcl::PointXYZRGBL>& cloud,
                PictureColors colors,
                std::size_t width)
 {
-  std::vector<Eigen::Vector3f> points;
+  // In double: a float cloud's squared coordinates stay in its range (float's at
+  // 1e-25 or 1e20 underflow or overflow).
+  std::vector<Eigen::Vector3d> points;
   std::vector<std::array<std::uint8_t, 3>> point_colors;
   for (const auto& point : cloud)
     if (pcl::isXYZFinite (point)) {
-      points.push_back (point.getVector3fMap());
+      points.push_back (point.getVector3fMap().cast<double>());
       point_colors.push_back (colorOf (point, colors));
     }
   if (points.empty())
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "The cloud has no finite point to draw.");
-  Eigen::Vector3f mean = Eigen::Vector3f::Zero();
+  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const auto& p : points)
     mean += p;
-  mean /= static_cast<float> (points.size());
-  Eigen::Matrix3f covariance = Eigen::Matrix3f::Zero();
+  mean /= static_cast<double> (points.size());
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
   for (const auto& p : points)
     covariance += (p - mean) * (p - mean).transpose();
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3f> solver (covariance);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver (covariance);
   // Eigenvalues ascending: view along the first axis, draw the other two.
-  Eigen::Vector3f view = solver.eigenvectors().col (0);
-  const Eigen::Vector3f sensor = cloud.sensor_origin_.head<3>();
-  if (view.dot (sensor - mean) > 0.0f)
+  Eigen::Vector3d view = solver.eigenvectors().col (0);
+  const Eigen::Vector3d sensor = cloud.sensor_origin_.head<3>().cast<double>();
+  if (view.dot (sensor - mean) > 0.0)
     view = -view; // looking from the sensor's side
-  const Eigen::Vector3f across = solver.eigenvectors().col (2);
-  const Eigen::Vector3f up = view.cross (across);
-  float min_x = std::numeric_limits<float>::max(), max_x = -min_x;
-  float min_y = min_x, max_y = -min_x;
+  const Eigen::Vector3d across = solver.eigenvectors().col (2);
+  const Eigen::Vector3d up = view.cross (across);
+  double min_x = std::numeric_limits<double>::max(), max_x = -min_x;
+  double min_y = min_x, max_y = -min_x;
   for (const auto& p : points) {
-    const Eigen::Vector3f d = p - mean;
+    const Eigen::Vector3d d = p - mean;
     min_x = std::min (min_x, d.dot (across));
     max_x = std::max (max_x, d.dot (across));
     min_y = std::min (min_y, d.dot (up));
     max_y = std::max (max_y, d.dot (up));
   }
-  const float extent = std::max (max_x - min_x, std::numeric_limits<float>::min());
-  const float pixel = extent / static_cast<float> (width - 1);
-  const auto height = std::max<std::size_t> (
-      1, static_cast<std::size_t> (std::ceil ((max_y - min_y) / pixel)) + 1);
+  // The width spans the larger of the two extents (the axis of most variance need
+  // not have the larger one); points all alike make a picture one pixel high.
+  const double extent = std::max (max_x - min_x, max_y - min_y);
+  const double pixel = extent > 0.0 ? extent / static_cast<double> (width - 1) : 1.0;
+  const auto height = std::min (
+      width, static_cast<std::size_t> (std::ceil ((max_y - min_y) / pixel)) + 1);
   RGBImage picture (width, height, {255, 255, 255});
-  std::vector<float> depth (width * height, std::numeric_limits<float>::max());
+  std::vector<double> depth (width * height, std::numeric_limits<double>::max());
   const int splat = static_cast<int> (std::max<std::size_t> (1, width / 400));
   for (std::size_t i = 0; i < points.size(); ++i) {
-    const Eigen::Vector3f d = points[i] - mean;
+    const Eigen::Vector3d d = points[i] - mean;
     const int x = static_cast<int> (std::lround ((d.dot (across) - min_x) / pixel));
     const int y = static_cast<int> (std::lround ((max_y - d.dot (up)) / pixel));
-    const float z = d.dot (view);
+    const double z = d.dot (view);
     for (int dy = -splat; dy <= splat; ++dy)
       for (int dx = -splat; dx <= splat; ++dx) {
         const int px = x + dx, py = y + dy;
         if (px < 0 || py < 0 || px >= static_cast<int> (width) ||
             py >= static_cast<int> (height))
           continue;
-        float& nearest = depth[py * width + px];
+        double& nearest = depth[py * width + px];
         if (z < nearest) {
           nearest = z;
           picture.set (px, py, point_colors[i]);

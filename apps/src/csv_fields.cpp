@@ -1,6 +1,8 @@
 #include <pcl/tda/apps/csv_fields.h>
 #include <pcl/exceptions.h>
 
+#include <charconv>
+
 namespace pcl {
 namespace tda {
 
@@ -56,6 +58,30 @@ csvField (const std::string& text)
     quoted += c;
   }
   return quoted + '"';
+}
+
+std::string
+formatNumber (double value)
+{
+  char buffer[32];
+  return {buffer, std::to_chars (buffer, buffer + sizeof (buffer), value + 0.0).ptr};
+}
+
+std::string
+formatNumber (float value)
+{
+  char buffer[32];
+  return {buffer, std::to_chars (buffer, buffer + sizeof (buffer), value + 0.0f).ptr};
+}
+
+void
+skipByteOrderMark (std::istream& in)
+{
+  char start[3];
+  if (in.read (start, 3) && std::string (start, 3) == "\xEF\xBB\xBF")
+    return;
+  in.clear();
+  in.seekg (0);
 }
 
 } // namespace tda

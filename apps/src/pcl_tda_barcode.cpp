@@ -332,7 +332,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     outputs.commit();
   }
   catch (const std::exception& error) {
-    console.error (pcl::tda::errorMessage (error));
+    console.error (outputs.message (error));
     return 1;
   }
   seconds.write = console.stepMilliseconds() / 1000.0;

@@ -7,6 +7,7 @@
 #include <pcl/tda/apps/category_protocol.h>
 #include <pcl/tda/apps/classification_tables.h>
 #include <pcl/tda/apps/confusion_matrix_plot.h>
+#include <pcl/tda/apps/csv_fields.h>
 #include <pcl/tda/apps/descriptor_list.h>
 #include <pcl/tda/apps/sanitizer_options.h> // this program runs PCL's GRSD and CVFH
 #include <pcl/tda/apps/tool_console.h>
@@ -382,7 +383,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     outputs.commit();
   }
   catch (const std::exception& error) {
-    console.error (pcl::tda::errorMessage (error));
+    console.error (outputs.message (error));
     return 1;
   }
   console.endStep (pcl::tda::countOf (files, "file"));

@@ -417,11 +417,27 @@ saveCloud (
     outputs.commit();
   }
   catch (const pcl::PCLException& e) {
-    console.error ("Cannot write " + path + ": " + pcl::tda::errorMessage (e));
+    console.error (outputs.message (e));
     return false;
   }
   console.endStep (std::to_string (cloud.size()) + " points");
   return true;
+}
+
+/** Prints the labels \a first to \a last: "none" when there is none, the label
+ * alone when there is one. */
+void
+printLabels (std::size_t first, std::size_t last)
+{
+  if (last < first)
+    print_info ("none");
+  else if (last == first)
+    print_value ("%zu", first);
+  else {
+    print_value ("%zu", first);
+    print_info (" to ");
+    print_value ("%zu", last);
+  }
 }
 
 /** Prints the region labels of a scene painted in colour regions: the table's
@@ -437,9 +453,7 @@ printRegions (bool table, std::size_t regions, std::size_t similar_pairs)
     print_info (", ");
   }
   print_info ("object regions ");
-  print_value ("%u", table ? 2u : 1u);
-  print_info (" to ");
-  print_value ("%zu", regions);
+  printLabels (table ? 2 : 1, regions);
   print_info ("; ");
   print_value ("%zu", similar_pairs);
   print_info (" pairs of adjacent regions in similar colours\n");
@@ -570,10 +584,9 @@ runHoles (const Options& options,
   print_info ("; labels: surface ");
   print_value ("%u", pcl::tda::SURFACE_LABEL);
   if (!surface.holes.empty()) {
-    print_info (", rims of the holes ");
-    print_value ("%u", 1u);
-    print_info (" to ");
-    print_value ("%zu", surface.holes.size());
+    print_info (surface.holes.size() == 1 ? ", rim of the hole "
+                                          : ", rims of the holes ");
+    printLabels (1, surface.holes.size());
   }
   if (!surface.closed) {
     print_info (", outer border ");

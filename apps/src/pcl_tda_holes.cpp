@@ -6,6 +6,7 @@
 #include <pcl/console/print.h>
 #include <pcl/tda/apps/cloud_picture.h>
 #include <pcl/tda/apps/coordinate_check.h>
+#include <pcl/tda/apps/csv_fields.h>
 #include <pcl/tda/apps/new_point_fields.h>
 #include <pcl/tda/apps/svg_png.h>
 #include <pcl/tda/apps/tool_console.h>
@@ -21,7 +22,9 @@
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -128,17 +131,25 @@ saveHolesCsv (const std::string& path,
               const std::vector<pcl::tda::HoleRim>& holes,
               double radius)
 {
+  using pcl::tda::formatNumber;
   std::ostringstream text;
-  text.precision (9);
   text << "id,rim_points,perimeter,area,clearance,centroid_x,centroid_y,centroid_z,"
           "normal_x,normal_y,normal_z,tilt_degrees,birth,alive_at,rim\n";
   for (std::size_t k = 0; k < holes.size(); ++k) {
     const pcl::tda::HoleRim& hole = holes[k];
-    text << k + 1 << ',' << hole.rim.size() << ',' << hole.perimeter << ',' << hole.area
-         << ',' << hole.clearance << ',' << hole.centroid.x() << ','
-         << hole.centroid.y() << ',' << hole.centroid.z() << ',' << hole.normal.x()
-         << ',' << hole.normal.y() << ',' << hole.normal.z() << ',' << hole.tilt_degrees
-         << ',' << hole.birth << ',' << radius << ',';
+    text << k + 1 << ',' << hole.rim.size();
+    for (const double value : {hole.perimeter, hole.area, hole.clearance})
+      text << ',' << formatNumber (value);
+    for (const float value : {hole.centroid.x(),
+                              hole.centroid.y(),
+                              hole.centroid.z(),
+                              hole.normal.x(),
+                              hole.normal.y(),
+                              hole.normal.z()})
+      text << ',' << formatNumber (value);
+    for (const double value : {hole.tilt_degrees, hole.birth, radius})
+      text << ',' << formatNumber (value);
+    text << ',';
     for (std::size_t i = 0; i < hole.rim.size(); ++i)
       text << (i > 0 ? " " : "") << hole.rim[i];
     text << '\n';
@@ -146,7 +157,8 @@ saveHolesCsv (const std::string& path,
   std::ofstream file (path);
   file << text.str();
   if (!file.flush())
-    PCL_THROW_EXCEPTION (pcl::IOException, "Cannot write " << path << ".");
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         "cannot write " << path << ": " << std::strerror (errno));
 }
 
 /** The H1 intervals of a diagram. */
@@ -323,7 +335,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     outputs.commit();
   }
   catch (const std::exception& error) {
-    console.error (pcl::tda::errorMessage (error));
+    console.error (outputs.message (error));
     return 1;
   }
   console.endStep (std::to_string (labelled.size()) + " labelled points");

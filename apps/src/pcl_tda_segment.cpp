@@ -232,7 +232,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     outputs.commit();
   }
   catch (const std::exception& error) {
-    console.error (pcl::tda::errorMessage (error));
+    console.error (outputs.message (error));
     return 1;
   }
   console.endStep (std::to_string (labelled.size()) + " labelled points");

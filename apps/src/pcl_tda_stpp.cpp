@@ -73,6 +73,7 @@ readList (const std::string& list)
   std::ifstream in (list);
   if (!in)
     PCL_THROW_EXCEPTION (pcl::IOException, "cannot read the list " << list);
+  pcl::tda::skipByteOrderMark (in);
   const std::filesystem::path folder = std::filesystem::path (list).parent_path();
   constexpr const char* SPACES = " \t\r";
   std::vector<std::string> paths;
@@ -165,23 +166,20 @@ run (const Options& options, pcl::tda::ToolConsole& console)
           for (std::size_t k = 0; k < size; ++k)
             out << ",f" << k;
           out << '\n';
-          char number[32];
           for (std::size_t i = 0; i < described.size(); ++i) {
             if (!described[i].error.empty() ||
                 !described[i].descriptors.front().failure.empty())
               continue;
             out << pcl::tda::csvField (options.inputs[i]);
-            for (const float value : described[i].descriptors.front().values) {
-              std::snprintf (number, sizeof number, "%.9g", value);
-              out << ',' << number;
-            }
+            for (const float value : described[i].descriptors.front().values)
+              out << ',' << pcl::tda::formatNumber (value);
             out << '\n';
           }
         });
     outputs.commit();
   }
   catch (const std::exception& error) {
-    console.error (pcl::tda::errorMessage (error));
+    console.error (outputs.message (error));
     return 1;
   }
   console.endStep (std::to_string (described.size() - failed) + " rows of " +

@@ -310,6 +310,23 @@ computeBarcode (const Options& options, pcl::tda::ToolConsole& console, Scene& s
   return true;
 }
 
+/** Whether \a filled starts with the points of \a labelled, at the same positions
+ * (non-finite ones alike): the filled cloud of pcl_tda_holes -fill on its input. */
+bool
+startsWithPoints (const pcl::PointCloud<pcl::PointXYZ>& filled,
+                  const pcl::PointCloud<pcl::PointXYZRGBL>& labelled)
+{
+  if (filled.size() < labelled.size())
+    return false;
+  for (std::size_t i = 0; i < labelled.size(); ++i) {
+    const bool finite = pcl::isXYZFinite (labelled[i]);
+    if (finite != pcl::isXYZFinite (filled[i]) ||
+        (finite && filled[i].getVector3fMap() != labelled[i].getVector3fMap()))
+      return false;
+  }
+  return true;
+}
+
 /** The label modes: the labelled cloud (and the filled cloud of -holes -fill).
  * \return false, with the reason printed, when a file cannot be used */
 bool
@@ -327,12 +344,11 @@ loadLabelScene (const Options& options, pcl::tda::ToolConsole& console, Scene& s
     console.error ("Cannot read the PCD file: " + pcl::tda::errorMessage (failure));
     return false;
   }
-  if (!options.fill.empty() && filled.size() < labelled.size()) {
-    console.error ("The -fill cloud " + options.fill + " has fewer points (" +
-                   std::to_string (filled.size()) + ") than " + options.input + " (" +
-                   std::to_string (labelled.size()) +
-                   "): pcl_tda_holes -fill writes the input points first, then the new "
-                   "ones.");
+  if (!options.fill.empty() && !startsWithPoints (filled, labelled)) {
+    console.error ("The -fill cloud " + options.fill + " does not start with the " +
+                   std::to_string (labelled.size()) + " points of " + options.input +
+                   ": pcl_tda_holes -fill writes the input points first, then the new "
+                   "ones (a filled cloud of another input?).");
     return false;
   }
   ColorCloud::Ptr by_label (new ColorCloud), own (new ColorCloud);
@@ -345,7 +361,7 @@ loadLabelScene (const Options& options, pcl::tda::ToolConsole& console, Scene& s
     (*by_label)[i].r = color[0];
     (*by_label)[i].g = color[1];
     (*by_label)[i].b = color[2];
-    if (labelled[i].label != 0) {
+    if (labelled[i].label != 0 && pcl::isXYZFinite (labelled[i])) {
       labels.insert (labelled[i].label);
       ++in_labels;
     }
@@ -494,7 +510,7 @@ saveScreenshot (pcl::visualization::PCLVisualizer& viewer,
     outputs.commit();
   }
   catch (const std::exception& error) {
-    console.error (pcl::tda::errorMessage (error));
+    console.error (outputs.message (error));
     return 1;
   }
   const int* size = viewer.getRenderWindow()->GetSize();

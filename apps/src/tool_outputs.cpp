@@ -1,10 +1,14 @@
 #include <pcl/tda/apps/tool_outputs.h>
+#include <pcl/tda/common/error_message.h>
 #include <pcl/exceptions.h>
 
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 #include <filesystem>
 
 namespace pcl {
@@ -38,7 +42,33 @@ void
 checkWritable (const std::string& path)
 {
   const std::string target = linkTarget (path);
+  const std::filesystem::path target_path (target);
+  std::string folder = target_path.parent_path().string();
+  if (folder.empty())
+    folder = ".";
   struct stat status;
+  if (::stat (folder.c_str(), &status) != 0)
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         "cannot write "
+                             << path << ": the folder " << folder
+                             << (errno == ENOENT
+                                     ? " does not exist"
+                                     : ": " + std::string (std::strerror (errno))));
+  if (!S_ISDIR (status.st_mode))
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         "cannot write " << path << ": " << folder
+                                         << " is not a folder");
+  if (::access (folder.c_str(), W_OK | X_OK) != 0)
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         "cannot write " << path << ": the folder " << folder
+                                         << " is not writable");
+  const long max_name = ::pathconf (folder.c_str(), _PC_NAME_MAX);
+  const std::size_t name_length = target_path.filename().string().size();
+  if (max_name > 0 && name_length > static_cast<std::size_t> (max_name))
+    PCL_THROW_EXCEPTION (pcl::IOException,
+                         "cannot write " << path << ": its file name has "
+                                         << name_length << " bytes, the folder takes "
+                                         << max_name << " at most");
   if (::stat (target.c_str(), &status) == 0) {
     if (S_ISDIR (status.st_mode))
       PCL_THROW_EXCEPTION (pcl::IOException,
@@ -47,17 +77,6 @@ checkWritable (const std::string& path)
       PCL_THROW_EXCEPTION (pcl::IOException,
                            "cannot write " << path << ": it is not a regular file");
   }
-  std::string folder = std::filesystem::path (target).parent_path().string();
-  if (folder.empty())
-    folder = ".";
-  if (::stat (folder.c_str(), &status) != 0 || !S_ISDIR (status.st_mode))
-    PCL_THROW_EXCEPTION (pcl::IOException,
-                         "cannot write " << path << ": the folder " << folder
-                                         << " does not exist");
-  if (::access (folder.c_str(), W_OK | X_OK) != 0)
-    PCL_THROW_EXCEPTION (pcl::IOException,
-                         "cannot write " << path << ": the folder " << folder
-                                         << " is not writable");
 }
 
 } // namespace
@@ -105,6 +124,23 @@ ToolOutputs::commit()
     file->commit();
 }
 
+std::string
+ToolOutputs::message (const std::exception& error) const
+{
+  std::string text = errorMessage (error);
+  // The longest first, so that no name is replaced inside a longer one.
+  std::vector<const FileReplacement*> files;
+  for (const auto& file : files_)
+    files.push_back (file.get());
+  std::sort (files.begin(), files.end(), [] (const auto* a, const auto* b) {
+    return a->temporary().size() > b->temporary().size();
+  });
+  for (const FileReplacement* file : files)
+    for (std::size_t at; (at = text.find (file->temporary())) != std::string::npos;)
+      text.replace (at, file->temporary().size(), file->path());
+  return text;
+}
+
 void
 removeTemporaryFilesOnSignals ()
 {
@@ -118,6 +154,9 @@ removeTemporaryFilesOnSignals ()
     action.sa_flags = SA_RESETHAND;
     ::sigaction (signal, &action, nullptr);
   }
+  // Past the file size limit (ulimit -f) a write then fails with EFBIG, which the
+  // tools report, instead of ending the process with a core dump.
+  std::signal (SIGXFSZ, SIG_IGN);
 }
 
 } // namespace tda

@@ -8,6 +8,7 @@
 #include <pcl/tda/apps/coordinate_check.h>
 #include <pcl/tda/apps/seeded_esf.h>
 #include <pcl/tda/apps/view_descriptors.h>
+#include <pcl/tda/common/coordinate_scale.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/features/stpp_estimation.h>
 #include <pcl/tda/features/topological_covariance_estimation.h>
@@ -20,6 +21,7 @@
 #include <cmath>
 #include <functional>
 #include <numeric>
+#include <sstream>
 #include <type_traits>
 
 namespace pcl {
@@ -101,9 +103,18 @@ estimateNormals (ViewInput& input)
     input.normal_failure = "fewer than 2 distinct points, no normals";
     return;
   }
+  // On the points divided by a power of two (exact), so that float sums of squares
+  // neither underflow nor overflow (a view in units of 1e-25 had no normal); the
+  // same normals in metres. The viewpoint, the origin, stays where it is.
+  const double scale = cloudScale (*input.points);
+  const Cloud::Ptr scaled (new Cloud);
+  for (const auto& point : *input.points)
+    scaled->push_back (pcl::PointXYZ (static_cast<float> (point.x / scale),
+                                      static_cast<float> (point.y / scale),
+                                      static_cast<float> (point.z / scale)));
   pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setInputCloud (input.points);
-  estimation.setRadiusSearch (input.radius);
+  estimation.setInputCloud (scaled);
+  estimation.setRadiusSearch (input.radius / scale);
   Normals all;
   estimation.compute (all);
   input.surface.reset (new Cloud);
@@ -117,9 +128,11 @@ estimateNormals (ViewInput& input)
       input.colored_surface->push_back ((*input.colored_points)[i]);
       input.normals->push_back (all[i]);
     }
-  if (input.surface->size() < 3)
-    input.normal_failure = "fewer than 3 points have a normal (radius " +
-                           std::to_string (input.radius) + ")";
+  if (input.surface->size() < 3) {
+    std::ostringstream reason;
+    reason << "fewer than 3 points have a normal (radius " << input.radius << ")";
+    input.normal_failure = reason.str();
+  }
 }
 
 /** The histogram of a one-point descriptor output. */

@@ -82,6 +82,7 @@ readRows (const std::string& manifest)
   std::ifstream in (manifest);
   if (!in)
     refuse (manifest, 0, "cannot be read");
+  skipByteOrderMark (in);
   const std::filesystem::path folder = std::filesystem::path (manifest).parent_path();
   std::vector<Row> rows;
   std::vector<std::size_t> columns;

@@ -4,6 +4,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <cerrno>
@@ -35,6 +36,27 @@ replaceLiveTemporary (const char* from, const char* to)
   }
 }
 
+/** The temporary files named so far by this process: a part of their names. */
+std::atomic<unsigned> temporaries_named{0};
+
+/** The longest name of a file in a folder (NAME_MAX on Linux's file systems). */
+constexpr std::size_t MAX_FILE_NAME = 255;
+
+/** A temporary file beside \a target, of a name no other has: \a target's with
+ * ".tmp.<process>.<number>" after it, \a target's part cut short where the whole
+ * would be longer than a file name may be. */
+std::string
+temporaryBeside (const std::string& target)
+{
+  const std::string suffix = ".tmp." + std::to_string (::getpid()) + "." +
+                             std::to_string (temporaries_named++);
+  const std::size_t slash = target.rfind ('/');
+  const std::size_t name_begin = slash == std::string::npos ? 0 : slash + 1;
+  const std::size_t name_kept =
+      std::min (target.size() - name_begin, MAX_FILE_NAME - suffix.size());
+  return target.substr (0, name_begin + name_kept) + suffix;
+}
+
 } // namespace
 
 std::string
@@ -54,9 +76,7 @@ linkTarget (const std::string& path)
 }
 
 FileReplacement::FileReplacement (const std::string& path)
-: path_ (path)
-, target_ (linkTarget (path))
-, temporary_ (target_ + ".tmp." + std::to_string (::getpid()))
+: path_ (path), target_ (linkTarget (path)), temporary_ (temporaryBeside (target_))
 {
   replaceLiveTemporary (nullptr, temporary_.c_str());
 }

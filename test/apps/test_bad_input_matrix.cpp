@@ -237,6 +237,10 @@ TEST_F (BadInputMatrix, BadOptions)
   };
   for (const auto& [arguments, message] : barcode_cases)
     expectRefusal ("barcode", arguments, message);
+  // A name longer than a folder takes: refused before the work, not after it.
+  expectRefusal ("barcode",
+                 "good.pcd " + std::string (252, 'a') + ".csv -radius 0.3",
+                 "its file name has 256 bytes, the folder takes 255 at most");
 
   const std::string segment = "good.pcd out.pcd -radius 0.3 -plane 0 ";
   const std::vector<std::pair<std::string, std::string>> segment_cases{
@@ -394,6 +398,10 @@ TEST_F (BadInputMatrix, BadOutputs)
   };
   for (const auto& [arguments, message] : barcode_cases)
     expectRefusal ("barcode", arguments, message);
+  // A name longer than a folder takes: refused before the work, not after it.
+  expectRefusal ("barcode",
+                 "good.pcd " + std::string (252, 'a') + ".csv -radius 0.3",
+                 "its file name has 256 bytes, the folder takes 255 at most");
   const std::vector<std::pair<std::string, std::string>> segment_cases{
       {"good.pcd nodir/out.pcd -radius 0.3 -plane 0",
        "cannot write nodir/out.pcd: the folder nodir does not exist"},
@@ -450,6 +458,37 @@ TEST_F (BadInputMatrix, BadOutputs)
   expectRefusal ("generate",
                  "circle nodir/c.pcd",
                  "cannot write nodir/c.pcd: the folder nodir does not exist");
+}
+
+// The longest names a folder takes are written: the temporary files' names are cut
+// short to fit (they were the name with ".tmp.<pid>" after it, too long, and a run
+// failed after all its work). Past the file size limit (`ulimit -f`) a write fails
+// with a message and nothing left behind (SIGXFSZ ended the tools, with a core dump
+// and their temporary files left).
+TEST_F (BadInputMatrix, LongestNamesAndTheFileSizeLimit)
+{
+  const std::string longest = std::string (251, 'b') + ".csv";
+  const RunResult written =
+      run ("cd " + folder_ + " && timeout 60 " + tool ("barcode") + " good.pcd " +
+           longest + " -radius 0.3 -svg " + std::string (251, 'c') + ".svg -png");
+  EXPECT_EQ (written.exit_code, 0) << written.output;
+  FolderState expected = stateOf (folder_);
+  for (const std::string& name :
+       {longest, std::string (251, 'c') + ".svg", std::string (251, 'c') + ".png"}) {
+    EXPECT_EQ (expected.count (name), 1u) << name << "\n" << written.output;
+    expected.erase (name);
+    std::filesystem::remove (path (name));
+  }
+  EXPECT_EQ (stateOf (folder_), expected) << "files left: " << written.output;
+
+  const FolderState before = stateOf (folder_);
+  const RunResult limited = run ("cd " + folder_ + " && ulimit -f 1 && timeout 60 " +
+                                 tool ("barcode") + " good.pcd new.csv -radius 0.3");
+  EXPECT_EQ (limited.exit_code, 1) << limited.output;
+  EXPECT_NE (limited.output.find ("cannot write new.csv: File too large"),
+             std::string::npos)
+      << limited.output;
+  EXPECT_EQ (stateOf (folder_), before) << limited.output;
 }
 
 // Under an address-space limit (`ulimit -v`) the default -memory is half of it: the

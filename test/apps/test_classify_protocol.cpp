@@ -114,9 +114,10 @@ TEST (ViewManifest, ReadsCategoriesInstancesAndViews)
   EXPECT_EQ (manifest.views[3].name, "1");
 
   // The same manifest from its rows in another order (the classification changed
-  // with the order of the rows).
+  // with the order of the rows), saved with a UTF-8 byte order mark, as spreadsheets
+  // save "CSV UTF-8" (its header had no 'path' column).
   writeFile (folder + "/shuffled.csv",
-             "path,category,instance,view\n"
+             "\xEF\xBB\xBFpath,category,instance,view\n"
              "d.pcd,bowl,b2,0\n"
              "a/y.pcd,mug,m1,1\n"
              "c.pcd,mug,m2,0\n"

@@ -7,6 +7,7 @@
 #include <pcl/common/io.h>
 #include <pcl/common/point_tests.h>
 #include <pcl/io/pcd_io.h>
+#include <pcl/tda/common/point3d.h>
 #include <pcl/tda/generators/hole_surfaces.h>
 #include <pcl/point_types.h>
 
@@ -100,14 +101,31 @@ TEST (HolesTool, LabelsTheRimBandsOfEveryHole)
     std::getline (row, id, ',');
     std::getline (row, rim_points, ',');
     EXPECT_EQ (id, std::to_string (k));
-    EXPECT_LE (std::stoul (rim_points), previous_rim); // by decreasing rim length
+    EXPECT_LE (std::stoul (rim_points), previous_rim); // by decreasing rim points
     previous_rim = std::stoul (rim_points);
     // The last column lists the rim's input indices, each of a labelled point.
     std::istringstream rim (table[k].substr (table[k].rfind (',') + 1));
-    std::size_t count = 0;
-    for (std::size_t index; rim >> index; ++count)
+    std::vector<std::size_t> indices;
+    for (std::size_t index; rim >> index;) {
       ASSERT_LT (index, output.size());
-    EXPECT_EQ (count, previous_rim);
+      indices.push_back (index);
+    }
+    EXPECT_EQ (indices.size(), previous_rim);
+    // The birth (13th column) reads back as the rim's longest edge, to the last bit;
+    // no number is written as -0.
+    double longest = 0.0;
+    for (std::size_t i = 0; i < indices.size(); ++i) {
+      const auto& p = input[indices[i]];
+      const auto& q = input[indices[(i + 1) % indices.size()]];
+      longest =
+          std::max (longest, pcl::tda::distance ({p.x, p.y, p.z}, {q.x, q.y, q.z}));
+    }
+    std::string field;
+    std::istringstream fields (table[k]);
+    for (int column = 0; column < 13; ++column)
+      std::getline (fields, field, ',');
+    EXPECT_EQ (std::stod (field), longest) << table[k];
+    EXPECT_EQ (table[k].find (",-0,"), std::string::npos) << table[k];
   }
 
   pcl::PointCloud<pcl::PointXYZ> with_fill;

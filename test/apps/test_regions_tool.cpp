@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "png_picture.h"
 #include "segmentation/segmentation_metrics.h"
 #include "test_data.h"
 #include "tool_runner.h"
@@ -179,6 +180,39 @@ TEST (RegionsTool, DrawsTheBarcodeAndThePicture)
   EXPECT_TRUE (isPNGFile (barcode_png));
   for (const std::string& file : {svg, png, barcode_png})
     std::remove (file.c_str());
+}
+
+// A cloud far from the scale of metres (the scene times 1e-25 or 1e20, where a
+// float's squares underflow or overflow) is drawn as the scene is: a picture of the
+// same size with about as many points drawn (the scaled floats round to a
+// neighbouring pixel here and there).
+TEST (RegionsTool, DrawsThePictureAtAnyScale)
+{
+  TabletopParameters parameters;
+  parameters.colour_regions = true;
+  parameters.seed = 11;
+  const TabletopScene scene = generateTabletopScene (parameters);
+  const std::string png = temporaryPath ("scaled.png");
+  std::vector<pcl::tda::test::Picture> pictures;
+  for (const float scale : {1.0f, 1e-25f, 1e20f}) {
+    LabelledCloud scaled = *scene.cloud;
+    for (auto& point : scaled)
+      point.getVector3fMap() *= scale;
+    segment (scaled, "-png " + png);
+    pictures.push_back (pcl::tda::test::readPNG (png));
+    std::remove (png.c_str());
+  }
+  const auto drawn = [] (const pcl::tda::test::Picture& picture) {
+    return static_cast<double> (picture.width) * picture.height -
+           static_cast<double> (picture.count ({255, 255, 255}));
+  };
+  ASSERT_GT (pictures[0].width, 0u);
+  for (std::size_t k = 1; k < pictures.size(); ++k) {
+    EXPECT_EQ (pictures[k].width, pictures[0].width) << "scale " << k;
+    EXPECT_EQ (pictures[k].height, pictures[0].height) << "scale " << k;
+    EXPECT_NEAR (drawn (pictures[k]), drawn (pictures[0]), 0.02 * drawn (pictures[0]))
+        << "scale " << k;
+  }
 }
 
 // The real coloured scans: every finite point in a region, a sensible number of

@@ -117,9 +117,10 @@ TEST (STPPTool, ReadsAListAndSelectsTheDescriptor)
 {
   const std::string folder = pcl::tda::test::temporaryFolder ("stpp_tool");
   const std::vector<std::string> paths = writeViews (folder);
-  // Relative to the list's folder, spaces around, a blank line and a comment.
+  // Relative to the list's folder, spaces around, a blank line, a comment and a
+  // UTF-8 byte order mark.
   const std::string list = folder + "/files.txt";
-  std::ofstream (list) << "# views\n  " << paths[0] << " \t\n\n"
+  std::ofstream (list) << "\xEF\xBB\xBF# views\n  " << paths[0] << " \t\n\n"
                        << std::filesystem::path (paths[1]).filename().string()
                        << "\r\n";
   const std::string csv = folder + "/out.csv";
@@ -139,6 +140,21 @@ TEST (STPPTool, ReadsAListAndSelectsTheDescriptor)
       runTool (covariance_csv + " " + paths[0] + " -descriptor covariance").exit_code,
       0);
   EXPECT_EQ (pcl::tda::splitCSVLine (linesOf (covariance_csv)[0]).size(),
+             pcl::tda::COVARIANCE_SIGNATURE_SIZE + 1);
+
+  // A view in units of about 1e-25 (2^-83 metres, exact in float) has its normals:
+  // they were estimated in float, whose sums of squares underflowed ("fewer than 3
+  // points have a normal").
+  pcl::PointCloud<pcl::PointXYZRGB> view;
+  ASSERT_EQ (pcl::io::loadPCDFile (paths[0], view), 0);
+  for (auto& point : view)
+    point.getVector3fMap() *= std::ldexp (1.0f, -83);
+  const std::string tiny = folder + "/tiny.pcd", tiny_csv = folder + "/tiny.csv";
+  pcl::io::savePCDFileBinary (tiny, view);
+  const RunResult tiny_result =
+      runTool (tiny_csv + " " + tiny + " -descriptor covariance");
+  ASSERT_EQ (tiny_result.exit_code, 0) << tiny_result.output;
+  EXPECT_EQ (pcl::tda::splitCSVLine (linesOf (tiny_csv)[1]).size(),
              pcl::tda::COVARIANCE_SIGNATURE_SIZE + 1);
 }
 

@@ -17,7 +17,9 @@
 #include <csignal>
 #include <filesystem>
 #include <fstream>
+#include <new>
 #include <sstream>
+#include <stdexcept>
 
 using namespace pcl::tda;
 
@@ -173,6 +175,21 @@ TEST (ToolCommandLine, HelpAndPositionalArguments)
       EXPECT_EQ (errorMessage (error), message);
     }
   }
+}
+
+// A message for people: PCL's exceptions without their function, file and line;
+// std::bad_alloc as what ran out (pcl_tda_stpp printed "std::bad_alloc").
+TEST (ErrorMessage, SaysWhatWentWrong)
+{
+  try {
+    PCL_THROW_EXCEPTION (pcl::IOException, "cannot write o.csv: File too large");
+  }
+  catch (const pcl::IOException& error) {
+    EXPECT_EQ (errorMessage (error), "cannot write o.csv: File too large");
+  }
+  EXPECT_EQ (errorMessage (std::bad_alloc()),
+             "out of memory (under a memory limit of the system, e.g. ulimit -v?)");
+  EXPECT_EQ (errorMessage (std::runtime_error ("plain")), "plain");
 }
 
 TEST (ToolOutputs, RefusesUnwritableOrCollidingOutputsNamingThem)

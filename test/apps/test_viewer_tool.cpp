@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <string>
@@ -219,9 +220,22 @@ TEST_F (ViewerTool, ClustersOfASegmentedScene)
   tool ("pcl_tda_segment", scene + " " + labels + " -radius 0.05 -leaf 0.01 -min 32");
   const auto sizes = labelSizes (labels);
   ASSERT_EQ (sizes.size(), 3u); // three objects, every point in one
+  // Non-finite points with a label of their own are in no cluster shown (they were
+  // counted as a fourth).
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  ASSERT_EQ (pcl::io::loadPCDFile (labels, labelled), 0);
+  const std::size_t num_points = labelled.size();
+  for (int i = 0; i < 5; ++i)
+    labelled.push_back (
+        pcl::PointXYZL (std::numeric_limits<float>::quiet_NaN(), 0.0f, 0.0f, 4));
+  pcl::io::savePCDFileBinary (labels, labelled);
   const RunResult result = viewer (labels + " -clusters -screenshot " + png);
   ASSERT_EQ (result.exit_code, 0) << result.output;
-  EXPECT_NE (result.output.find ("3 clusters"), std::string::npos) << result.output;
+  EXPECT_NE (result.output.find (std::to_string (num_points + 5) +
+                                 " points, 3 clusters (" + std::to_string (num_points) +
+                                 " points in them"),
+             std::string::npos)
+      << result.output;
   const Picture picture = readPNG (png);
   ASSERT_EQ (picture.width, 800u);
   ASSERT_EQ (picture.height, 600u);
@@ -349,18 +363,24 @@ protected:
 
 TEST_F (ViewerBadInput, FilesWithoutLabelsMissingFilesAndNoDisplay)
 {
-  // A -fill cloud with fewer points than the labelled one.
-  const std::string few = path ("few.pcd");
-  pcl::PointCloud<pcl::PointXYZ> fewer;
+  // A -fill cloud with fewer points than the labelled one, and one of another input
+  // (the points moved, more of them): it was shown with the other's new points.
+  const std::string few = path ("few.pcd"), other = path ("other.pcd");
+  pcl::PointCloud<pcl::PointXYZ> fewer, moved = points_;
   fewer.insert (fewer.end(), points_.begin(), points_.begin() + 10);
   pcl::io::savePCDFileBinary (few, fewer);
+  for (auto& point : moved)
+    point.x += 0.01f;
+  moved.insert (moved.end(), points_.begin(), points_.begin() + 10);
+  pcl::io::savePCDFileBinary (other, moved);
   const std::string missing = path ("missing.pcd"), screenshot = " -screenshot " + png_;
   expectRefused ({
       {missing + " -clusters" + screenshot, "Cannot read the PCD file"},
       {plain_ + " -clusters" + screenshot, "has no label field"},
       {plain_ + " -holes" + screenshot, "has no label field"},
       {labelled_ + " -holes -fill " + missing + screenshot, "Cannot read the PCD file"},
-      {labelled_ + " -holes -fill " + few + screenshot, "has fewer points"},
+      {labelled_ + " -holes -fill " + few + screenshot, "does not start with the"},
+      {labelled_ + " -holes -fill " + other + screenshot, "does not start with the"},
   });
   expectRefused ({{plain_ + " -barcode -radius 0.02" + screenshot, "No X display"},
                   {labelled_ + " -clusters", "No X display"}},

@@ -50,14 +50,5 @@ writeFeaturesCSV (std::ostream& out,
                   const std::vector<std::string>& names,
                   const std::vector<std::vector<ViewDescriptor>>& computed);
 
-/** \brief \a value as the shortest decimal that reads back as the same value,
- * whatever the locale. */
-std::string
-formatNumber (double value);
-
-/** \brief \a value as the shortest decimal that reads back as the same float. */
-std::string
-formatNumber (float value);
-
 } // namespace tda
 } // namespace pcl

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <istream>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,21 @@ splitCSVLine (const std::string& line);
  * back. */
 std::string
 csvField (const std::string& text);
+
+/** \brief Skips the UTF-8 byte order mark at the start of the file \a in (opened,
+ * not read yet), where there is one: spreadsheets save "CSV UTF-8" with it. */
+void
+skipByteOrderMark (std::istream& in);
+
+/** \brief \a value as the shortest decimal that reads back as the same value,
+ * whatever the locale (0 for -0), for a CSV field. */
+std::string
+formatNumber (double value);
+
+/** \brief \a value as the shortest decimal that reads back as the same float (0 for
+ * -0). */
+std::string
+formatNumber (float value);
 
 } // namespace tda
 } // namespace pcl

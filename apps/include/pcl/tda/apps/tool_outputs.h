@@ -2,6 +2,7 @@
 
 #include <pcl/tda/common/atomic_file.h>
 
+#include <exception>
 #include <memory>
 #include <string>
 #include <vector>
@@ -11,7 +12,8 @@ namespace tda {
 
 /** \brief Makes SIGINT, SIGTERM and SIGHUP (where not ignored) remove the temporary
  * files of the outputs being written (removeTemporaryFiles()) before they end the
- * process as they would have: an interrupted tool leaves no file behind. */
+ * process as they would have: an interrupted tool leaves no file behind. Ignores
+ * SIGXFSZ, so that a write past the file size limit fails as a write (EFBIG). */
 void
 removeTemporaryFilesOnSignals ();
 
@@ -48,6 +50,11 @@ public:
    * \throws pcl::IOException naming the file that could not be replaced */
   void
   commit ();
+
+  /** \brief The message of \a error (errorMessage()) with each temporary file
+   * named by its output, as the user named it: for a failed write. */
+  std::string
+  message (const std::exception& error) const;
 
 private:
   std::vector<std::unique_ptr<FileReplacement>> files_;

@@ -55,7 +55,8 @@ struct HoleRim {
  * from its centroid) give one hole, with the shortest of their rims: holes that line
  * up across a tube or a closed surface stay apart.
  *
- * Holes come in decreasing order of rim length, ties by their class edge.
+ * Holes come in decreasing order of their number of rim points, ties by their class
+ * edge.
  * \param[in] cycles the minimal 1-cycles (minimalCycles())
  * \param[in] positions the position of every vertex
  * \param[in] adjacency the neighbours of every vertex (the edges of the complex)
