@@ -184,7 +184,7 @@ mv "$picture.tmp" "$picture"
   echo "Memory: the complex with its triangles listed (16 bytes per edge, 24 per"
   echo "triangle; the default pipeline holds only the edges and enumerates the"
   echo "triangles), the peak resident memory of the pcl_tda_barcode process (about 5 MiB"
-  echo "of it is the process with its libraries loaded, as \\`pcl_tda_barcode -h\\` peaks), and"
+  echo 'of it is the process with its libraries loaded, as `pcl_tda_barcode -h` peaks), and'
   echo "what our pipeline added to the benchmark's peak in process."
   echo
   echo "| points | complex MiB | pcl_tda_barcode peak MiB | x complex | in-process growth MiB | x complex |"
