@@ -18,19 +18,39 @@ namespace tda {
 
 namespace {
 
-/** Values closer than this match whatever the relative tolerance. */
-constexpr double ABSOLUTE_TOLERANCE = 1e-12;
+/** Values closer than this times the largest finite magnitude of the two diagrams
+ * match whatever the relative tolerance: a floor that scales with the diagrams (an
+ * absolute 1e-12 matched every value of a cloud in units of 1e-20 with every other). */
+constexpr double ABSOLUTE_TOLERANCE_PER_SCALE = 1e-12;
 
-bool
-valuesMatch (double x, double y, double relative_tolerance)
+/** When two values match: within the relative tolerance of the larger, or within the
+ * absolute floor. */
+struct Tolerance {
+  double relative;
+  double absolute;
+
+  bool
+  match (double x, double y) const
+  {
+    if (x == y)
+      return true;
+    if (std::isinf (x) || std::isinf (y))
+      return false;
+    return std::abs (x - y) <=
+           std::max (relative * std::max (std::abs (x), std::abs (y)), absolute);
+  }
+};
+
+/** The largest magnitude of a finite value of \a diagram (0 for none). */
+double
+largestFiniteValue (const PersistenceDiagram& diagram)
 {
-  if (x == y)
-    return true;
-  if (std::isinf (x) || std::isinf (y))
-    return false;
-  return std::abs (x - y) <=
-         std::max (relative_tolerance * std::max (std::abs (x), std::abs (y)),
-                   ABSOLUTE_TOLERANCE);
+  double largest = 0.0;
+  for (const auto& interval : diagram)
+    for (const double value : {interval.birth, interval.death})
+      if (std::isfinite (value))
+        largest = std::max (largest, std::abs (value));
+  return largest;
 }
 
 bool
@@ -44,7 +64,7 @@ byValue (const PersistenceInterval& a, const PersistenceInterval& b)
 PersistenceDiagram
 nonZeroIntervals (const PersistenceDiagram& diagram,
                   const char* name,
-                  double relative_tolerance)
+                  const Tolerance& tolerance)
 {
   PersistenceDiagram kept;
   kept.reserve (diagram.size());
@@ -54,7 +74,7 @@ nonZeroIntervals (const PersistenceDiagram& diagram,
       PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                            "interval " << i << " of the " << name
                                        << " diagram has a NaN value");
-    if (!valuesMatch (interval.birth, interval.death, relative_tolerance))
+    if (!tolerance.match (interval.birth, interval.death))
       kept.push_back (interval);
   }
   std::sort (kept.begin(), kept.end(), byValue);
@@ -68,12 +88,12 @@ void
 forEachMatchingInterval (const PersistenceInterval& interval,
                          const PersistenceInterval* second,
                          std::size_t second_size,
-                         double relative_tolerance,
+                         const Tolerance& tolerance,
                          Visit visit)
 {
   const double reach =
-      std::abs (interval.birth) * relative_tolerance / (1.0 - relative_tolerance) +
-      ABSOLUTE_TOLERANCE;
+      std::abs (interval.birth) * tolerance.relative / (1.0 - tolerance.relative) +
+      tolerance.absolute;
   const auto begin = std::lower_bound (
       second,
       second + second_size,
@@ -82,8 +102,8 @@ forEachMatchingInterval (const PersistenceInterval& interval,
   for (auto candidate = begin;
        candidate != second + second_size && candidate->birth <= interval.birth + reach;
        ++candidate)
-    if (valuesMatch (interval.birth, candidate->birth, relative_tolerance) &&
-        valuesMatch (interval.death, candidate->death, relative_tolerance))
+    if (tolerance.match (interval.birth, candidate->birth) &&
+        tolerance.match (interval.death, candidate->death))
       if (!visit (static_cast<std::size_t> (candidate - second)))
         return;
 }
@@ -101,7 +121,7 @@ matchDimension (const PersistenceInterval* first,
                 std::size_t first_size,
                 const PersistenceInterval* second,
                 std::size_t second_size,
-                double relative_tolerance,
+                const Tolerance& tolerance,
                 DiagramComparison& result)
 {
   constexpr std::size_t NONE = std::numeric_limits<std::size_t>::max();
@@ -114,11 +134,11 @@ matchDimension (const PersistenceInterval* first,
     const double death = first[i].death;
     for (; window_end < second_size &&
            (second[window_end].birth <= birth ||
-            valuesMatch (birth, second[window_end].birth, relative_tolerance));
+            tolerance.match (birth, second[window_end].birth));
          ++window_end)
       window.emplace (second[window_end].death, window_end);
     for (; window_begin < window_end && second[window_begin].birth < birth &&
-           !valuesMatch (birth, second[window_begin].birth, relative_tolerance);
+           !tolerance.match (birth, second[window_begin].birth);
          ++window_begin)
       window.erase ({second[window_begin].death, window_begin});
 
@@ -128,8 +148,7 @@ matchDimension (const PersistenceInterval* first,
     const auto above = window.lower_bound ({death, 0});
     for (auto candidate :
          {above, above == window.begin() ? window.end() : std::prev (above)}) {
-      if (candidate == window.end() ||
-          !valuesMatch (death, candidate->first, relative_tolerance))
+      if (candidate == window.end() || !tolerance.match (death, candidate->first))
         continue;
       const double distance =
           candidate->first == death ? 0.0 : std::abs (candidate->first - death);
@@ -157,7 +176,7 @@ matchDimension (const PersistenceInterval* first,
     for (std::size_t q = 0; q < queue.size() && free_end == NONE; ++q) {
       const std::size_t i = queue[q];
       forEachMatchingInterval (
-          first[i], second, second_size, relative_tolerance, [&] (std::size_t j) {
+          first[i], second, second_size, tolerance, [&] (std::size_t j) {
             if (visited[j])
               return true;
             visited[j] = true;
@@ -241,8 +260,12 @@ compareDiagrams (const PersistenceDiagram& first,
     PCL_THROW_EXCEPTION (pcl::BadArgumentException,
                          "relative tolerance " << relative_tolerance
                                                << " is not in [0, 1)");
-  const PersistenceDiagram a = nonZeroIntervals (first, "first", relative_tolerance);
-  const PersistenceDiagram b = nonZeroIntervals (second, "second", relative_tolerance);
+  const Tolerance tolerance{
+      relative_tolerance,
+      ABSOLUTE_TOLERANCE_PER_SCALE *
+          std::max (largestFiniteValue (first), largestFiniteValue (second))};
+  const PersistenceDiagram a = nonZeroIntervals (first, "first", tolerance);
+  const PersistenceDiagram b = nonZeroIntervals (second, "second", tolerance);
   DiagramComparison result{false, 0, {}, {}};
   std::size_t i = 0, j = 0;
   while (i < a.size() || j < b.size()) {
@@ -256,17 +279,17 @@ compareDiagrams (const PersistenceDiagram& first,
     while (j_end < b.size() && b[j_end].dimension == dimension)
       ++j_end;
     matchDimension (
-        a.data() + i, i_end - i, b.data() + j, j_end - j, relative_tolerance, result);
+        a.data() + i, i_end - i, b.data() + j, j_end - j, tolerance, result);
     i = i_end;
     j = j_end;
   }
   // An unmatched interval within the tolerance of a point of the diagonal (both
   // values match its middle) is one the other tool, in its precision, had of length
   // zero: dropped as well.
-  const auto nearDiagonal = [relative_tolerance] (const PersistenceInterval& interval) {
+  const auto nearDiagonal = [&tolerance] (const PersistenceInterval& interval) {
     const double middle = 0.5 * (interval.birth + interval.death);
-    return valuesMatch (interval.birth, middle, relative_tolerance) &&
-           valuesMatch (interval.death, middle, relative_tolerance);
+    return tolerance.match (interval.birth, middle) &&
+           tolerance.match (interval.death, middle);
   };
   for (PersistenceDiagram* unmatched : {&result.only_in_first, &result.only_in_second})
     unmatched->erase (

@@ -168,6 +168,25 @@ TEST (DiagramComparison, AbsoluteFloorMatchesZeroWithTinyValues)
   EXPECT_FALSE (compareDiagrams ({{1, 0.0, 1.0}}, {{1, 1e-9, 1.0}}).equal);
 }
 
+// The floor scales with the diagrams: diagrams in units of 1e-20 compare as in
+// metres (an absolute floor of 1e-12 matched every such value with every other, and
+// dropped every finite interval as of length zero).
+TEST (DiagramComparison, FloorScalesWithTheDiagrams)
+{
+  for (const double unit : {1.0, 1e-20, 1e-30, 1e20}) {
+    const PersistenceDiagram ours{{0, 0.0, 0.5 * unit}, {1, 0.3 * unit, 0.4 * unit}};
+    const PersistenceDiagram near{{0, 0.0, 0.500001 * unit},
+                                  {1, 0.300001 * unit, 0.4 * unit}};
+    const PersistenceDiagram off{{0, 0.0, 0.5 * unit}, {1, 0.3 * unit, 0.41 * unit}};
+    const PersistenceDiagram missing{{0, 0.0, 0.5 * unit}};
+    EXPECT_TRUE (compareDiagrams (ours, near).equal) << unit;
+    EXPECT_FALSE (compareDiagrams (ours, off).equal) << unit;
+    EXPECT_FALSE (compareDiagrams (ours, missing).equal) << unit;
+    EXPECT_TRUE (compareDiagrams ({{0, 0.0, unit}}, {{0, 1e-15 * unit, unit}}).equal)
+        << unit;
+  }
+}
+
 TEST (DiagramComparison, EssentialDoesNotMatchFinite)
 {
   const double max = std::numeric_limits<double>::max();

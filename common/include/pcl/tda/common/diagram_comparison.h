@@ -31,7 +31,9 @@ struct DiagramComparison {
  * death), the way results of different tools (Ripser, GUDHI, PHAT) are compared.
  *
  * Two values x and y match when both are infinite or |x - y| <= max(\a
- * relative_tolerance * max(|x|, |y|), 1e-12). Intervals whose birth matches their
+ * relative_tolerance * max(|x|, |y|), 1e-12 * m), m the largest magnitude of a finite
+ * value of the two diagrams (a floor for values near 0, in the diagrams' unit, so that
+ * clouds in any unit compare alike). Intervals whose birth matches their
  * death are dropped from both diagrams first, since tools break ties differently.
  * Each interval of \a first, in (birth, death) order, is matched to the unmatched
  * interval of \a second of the same dimension with matching birth whose matching
