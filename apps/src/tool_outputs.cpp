@@ -5,7 +5,6 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstring>
@@ -128,15 +127,10 @@ std::string
 ToolOutputs::message (const std::exception& error) const
 {
   std::string text = errorMessage (error);
-  // The longest first, so that no name is replaced inside a longer one.
-  std::vector<const FileReplacement*> files;
   for (const auto& file : files_)
-    files.push_back (file.get());
-  std::sort (files.begin(), files.end(), [] (const auto* a, const auto* b) {
-    return a->temporary().size() > b->temporary().size();
-  });
-  for (const FileReplacement* file : files)
-    for (std::size_t at; (at = text.find (file->temporary())) != std::string::npos;)
+    for (std::size_t at = 0;
+         (at = text.find (file->temporary(), at)) != std::string::npos;
+         at += file->path().size())
       text.replace (at, file->temporary().size(), file->path());
   return text;
 }

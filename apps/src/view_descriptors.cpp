@@ -107,13 +107,8 @@ estimateNormals (ViewInput& input)
   // neither underflow nor overflow (a view in units of 1e-25 had no normal); the
   // same normals in metres. The viewpoint, the origin, stays where it is.
   const double scale = cloudScale (*input.points);
-  const Cloud::Ptr scaled (new Cloud);
-  for (const auto& point : *input.points)
-    scaled->push_back (pcl::PointXYZ (static_cast<float> (point.x / scale),
-                                      static_cast<float> (point.y / scale),
-                                      static_cast<float> (point.z / scale)));
   pcl::NormalEstimation<pcl::PointXYZ, pcl::Normal> estimation;
-  estimation.setInputCloud (scaled);
+  estimation.setInputCloud (scaledPositions (*input.points, scale));
   estimation.setRadiusSearch (input.radius / scale);
   Normals all;
   estimation.compute (all);

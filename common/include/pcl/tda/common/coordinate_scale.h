@@ -2,6 +2,7 @@
 
 #include <pcl/common/point_tests.h>
 #include <pcl/point_cloud.h>
+#include <pcl/point_types.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +45,23 @@ double
 cloudScale (const pcl::PointCloud<PointT>& cloud)
 {
   return powerOfTwoScale (std::max (largestCoordinate (cloud), 0.0));
+}
+
+/** \brief The positions of \a cloud divided by \a scale (cloudScale(): a power of
+ * two, so exact in float), for float searches and estimations that then work in any
+ * unit; lengths given to them are divided by \a scale too. */
+template <typename PointT>
+pcl::PointCloud<pcl::PointXYZ>::Ptr
+scaledPositions (const pcl::PointCloud<PointT>& cloud, double scale)
+{
+  pcl::PointCloud<pcl::PointXYZ>::Ptr scaled (new pcl::PointCloud<pcl::PointXYZ>);
+  scaled->reserve (cloud.size());
+  for (const PointT& p : cloud)
+    scaled->push_back (pcl::PointXYZ (static_cast<float> (p.x / scale),
+                                      static_cast<float> (p.y / scale),
+                                      static_cast<float> (p.z / scale)));
+  scaled->is_dense = cloud.is_dense;
+  return scaled;
 }
 
 } // namespace tda

@@ -99,14 +99,7 @@ void
 HoleFilling<PointT>::buildScaledSearch (ScaledSearch& search) const
 {
   search.scale = cloudScale (*input_);
-  pcl::PointCloud<pcl::PointXYZ>::Ptr scaled (new pcl::PointCloud<pcl::PointXYZ>);
-  scaled->reserve (input_->size());
-  for (const PointT& p : *input_)
-    scaled->push_back (pcl::PointXYZ (static_cast<float> (p.x / search.scale),
-                                      static_cast<float> (p.y / search.scale),
-                                      static_cast<float> (p.z / search.scale)));
-  scaled->is_dense = input_->is_dense;
-  search.tree.setInputCloud (scaled);
+  search.tree.setInputCloud (scaledPositions (*input_, search.scale));
 }
 
 template <typename PointT>
