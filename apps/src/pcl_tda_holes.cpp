@@ -197,8 +197,9 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   if (!blob.data.empty())
     pcl::fromPCLPointCloud2 (blob, *cloud);
   console.endStep (std::to_string (cloud->size()) + " points");
-  // Measured once, for the check of the coordinates and for the estimation.
-  const double spacing = options.radius > 0.0 ? 0.0 : pcl::tda::surfaceSpacing (*cloud);
+  // Measured once, for the check of the coordinates and for the estimation; 0 when
+  // there is no surface (fewer than 7 distinct finite points).
+  const double spacing = pcl::tda::surfaceSpacing (*cloud);
   const double radius = options.radius > 0.0
                             ? options.radius
                             : Estimation::AUTO_RADIUS_PER_SPACING * spacing;
@@ -224,9 +225,11 @@ run (const Options& options, pcl::tda::ToolConsole& console)
     estimation.compute (flags);
   }
   if (flags.empty()) { // refused, or no surface (an empty cloud too)
-    console.error ("Hole detection failed (see above). For a complex over the memory "
-                   "limit: set a larger one with -memory M (MiB), or a smaller "
-                   "-radius; for a radius refused, the radius it advises.");
+    console.error (spacing > 0.0
+                       ? "Hole detection failed (see above). For a complex over the "
+                         "memory limit: set a larger one with -memory M (MiB), or a "
+                         "smaller -radius; for a radius refused, the radius it advises."
+                       : "Hole detection failed (see above).");
     const std::string coincident = pcl::tda::coincidentPointsAdvice (*cloud);
     if (!coincident.empty())
       console.error (coincident);

@@ -31,6 +31,7 @@
 #include <vtkRenderWindow.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <limits>
 #include <memory>
@@ -68,6 +69,10 @@ constexpr int FONT_SIZE = 14;
 /** The overlay's text starts this many pixels from the bottom left corner, above
  * PCLVisualizer's frame rate. */
 constexpr int TEXT_X = 10, TEXT_Y = 24;
+/** Clouds whose coordinates are all below this (2^-40, about 1e-12) are drawn
+ * scaled up by a power of two: VTK's camera frames them distorted from about 1e-20
+ * and not at all from about 1e-25. */
+constexpr double MIN_DRAWN_COORDINATE = 0x1p-40;
 
 void
 printHelp (const char* program)
@@ -519,6 +524,43 @@ saveScreenshot (pcl::visualization::PCLVisualizer& viewer,
   return 0;
 }
 
+/** Divides the positions of \a cloud by \a scale (a power of two: exact). */
+template <typename PointT>
+void
+divideScale (pcl::PointCloud<PointT>& cloud, double scale)
+{
+  for (PointT& point : cloud)
+    point.getVector3fMap() /= static_cast<float> (scale);
+}
+
+/** Scales the clouds of \a scene up by a power of two to be drawn when their
+ * coordinates are all below MIN_DRAWN_COORDINATE, and says so. Done after the
+ * persistence: only the drawing changes. */
+void
+scaleTinyClouds (Scene& scene)
+{
+  double largest = 0.0;
+  if (scene.points)
+    largest = pcl::tda::largestCoordinate (*scene.points);
+  for (const ColorCloud::Ptr& colors : scene.colorings)
+    largest = std::max (largest, pcl::tda::largestCoordinate (*colors));
+  if (scene.extra)
+    largest = std::max (largest, pcl::tda::largestCoordinate (*scene.extra));
+  if (!(largest > 0.0 && largest < MIN_DRAWN_COORDINATE))
+    return;
+  const double scale = pcl::tda::powerOfTwoScale (largest);
+  if (scene.points)
+    divideScale (*scene.points, scale);
+  for (const ColorCloud::Ptr& colors : scene.colorings)
+    divideScale (*colors, scale);
+  if (scene.extra)
+    divideScale (*scene.extra, scale);
+  print_info ("Coordinates up to %g, too small for VTK's camera: drawn multiplied by "
+              "2^%d.\n",
+              largest,
+              -std::ilogb (scale));
+}
+
 /** Runs the window until it is closed: the mouse and keys of pcl_viewer, h for the
  * help, and in -barcode mode Left and Right to step the radius. */
 void
@@ -619,6 +661,7 @@ run (const Options& options, pcl::tda::ToolConsole& console)
   }
   if (options.mode == Mode::BARCODE && !computeBarcode (options, console, scene))
     return 1;
+  scaleTinyClouds (scene);
   return show (options, outputs, console, scene);
 }
 

@@ -17,6 +17,7 @@
 #include "tool_runner.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -219,6 +220,35 @@ TEST (HolesTool, SmallestHoleRadius)
                                      std::to_string ((radii[1] + radii[2]) / 2));
   ASSERT_EQ (largest.exit_code, 0) << largest.output;
   EXPECT_NE (largest.output.find (": 1 hole,"), std::string::npos) << largest.output;
+}
+
+TEST (HolesTool, AdvisesOnlyWhatApplies)
+{
+  // No surface (every point the same): the reason and the advice on coincident points,
+  // not the advice for a complex over the memory limit, nothing written.
+  pcl::PointCloud<pcl::PointXYZ> same (200, 1, pcl::PointXYZ (0.5f, 0.5f, 0.5f));
+  const std::string in = temporaryPath ("same.pcd"),
+                    out = temporaryPath ("same_out.pcd");
+  pcl::io::savePCDFileBinary (in, same);
+  std::remove (out.c_str());
+  const RunResult no_surface = runTool (in + " " + out);
+  EXPECT_EQ (no_surface.exit_code, 1) << no_surface.output;
+  EXPECT_NE (no_surface.output.find ("there is no surface"), std::string::npos)
+      << no_surface.output;
+  EXPECT_NE (no_surface.output.find ("199 of the 200 points repeat"), std::string::npos)
+      << no_surface.output;
+  EXPECT_EQ (no_surface.output.find ("-memory"), std::string::npos)
+      << no_surface.output;
+  EXPECT_FALSE (std::ifstream (out).good());
+  // A complex over the memory limit: the advice names the option.
+  const std::string surface = temporaryPath ("surface.pcd");
+  pcl::io::savePCDFileBinary (surface, *plane (3).cloud);
+  const RunResult refused = runTool (surface + " " + out + " -memory 0.01");
+  EXPECT_EQ (refused.exit_code, 1) << refused.output;
+  EXPECT_NE (refused.output.find ("set a larger one with -memory M (MiB)"),
+             std::string::npos)
+      << refused.output;
+  EXPECT_FALSE (std::ifstream (out).good());
 }
 
 TEST (HolesTool, CentroidFillAndShuffledInput)

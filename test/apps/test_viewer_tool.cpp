@@ -4,6 +4,7 @@
 // Betti numbers of the -barcode overlay; and bad input refused with a message, a
 // non-zero exit and no picture written.
 
+#include <pcl/common/io.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/tda/apps/barcode_overlay.h>
 #include <pcl/tda/apps/cloud_picture.h>
@@ -19,6 +20,7 @@
 #include <unistd.h>
 
 #include <array>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <limits>
@@ -243,6 +245,42 @@ TEST_F (ViewerTool, ClustersOfASegmentedScene)
   for (const auto& [label, size] : sizes)
     EXPECT_GT (picture.count (labelColor (label)), size / 4) << label;
   EXPECT_EQ (picture.count (labelColor (4)), 0u);
+}
+
+TEST_F (ViewerTool, DrawsTinyCloudsScaledUp)
+{
+  // The same labelled circle in metres and times 2^-83 (about 1e-25, where VTK's
+  // camera drew nothing): the same picture, and a note that it is drawn scaled.
+  pcl::tda::CircleParameters parameters;
+  parameters.num_points = 400;
+  parameters.seed = 4;
+  pcl::PointCloud<pcl::PointXYZL> labelled;
+  pcl::copyPointCloud (*pcl::tda::generateCircle (parameters).cloud, labelled);
+  for (std::size_t i = 0; i < labelled.size(); ++i)
+    labelled[i].label = 1 + i % 2;
+  const std::string in = path ("circle.pcd"), png = path ("circle.png");
+  pcl::io::savePCDFileBinary (in, labelled);
+  RunResult result = viewer (in + " -clusters -screenshot " + png);
+  ASSERT_EQ (result.exit_code, 0) << result.output;
+  EXPECT_EQ (result.output.find ("drawn multiplied"), std::string::npos)
+      << result.output;
+  const Picture metres = readPNG (png);
+  for (auto& point : labelled)
+    point.getVector3fMap() *= std::ldexp (1.0f, -83);
+  pcl::io::savePCDFileBinary (in, labelled);
+  result = viewer (in + " -clusters -screenshot " + png);
+  ASSERT_EQ (result.exit_code, 0) << result.output;
+  EXPECT_NE (result.output.find ("drawn multiplied by 2^"), std::string::npos)
+      << result.output;
+  const Picture tiny = readPNG (png);
+  for (std::uint32_t label : {1u, 2u}) {
+    const auto drawn = metres.count (labelColor (label));
+    EXPECT_GT (drawn, 200u) << label;
+    EXPECT_NEAR (static_cast<double> (tiny.count (labelColor (label))),
+                 static_cast<double> (drawn),
+                 0.02 * static_cast<double> (drawn))
+        << label;
+  }
 }
 
 TEST_F (ViewerTool, RegionsAndTheirOwnColours)

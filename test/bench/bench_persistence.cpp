@@ -24,6 +24,7 @@
 
 #include <fcntl.h>
 #include <gudhi/distance_functions.h>
+#include <gudhi/Flag_complex_edge_collapser.h>
 #include <gudhi/Persistent_cohomology.h>
 #include <gudhi/Rips_complex.h>
 #include <gudhi/Simplex_tree.h>
@@ -104,6 +105,8 @@ printUsage (std::FILE* stream)
       "runs):\n"
       "                ripser (point-cloud mode), ripser-sparse (on our edges), "
       "gudhi,\n"
+      "                gudhi-collapse (GUDHI's edge collapse of our edges, then our\n"
+      "                H0 + H1 on the edges it keeps),\n"
       "                phat-standard, phat-twist, phat-chunk, phat-row,\n"
       "                phat-spectral_sequence (PHAT's reductions of our complex; "
       "phat:\n"
@@ -118,7 +121,8 @@ printUsage (std::FILE* stream)
 void
 parseTools (const std::string& list, std::set<std::string>& tools)
 {
-  std::set<std::string> phat, known = {"ripser", "ripser-sparse", "gudhi"};
+  std::set<std::string> phat,
+      known = {"ripser", "ripser-sparse", "gudhi", "gudhi-collapse"};
   for (const std::string& reduction : PHAT_REDUCTIONS)
     phat.insert ("phat-" + reduction);
   known.insert (phat.begin(), phat.end());
@@ -618,6 +622,56 @@ measureGUDHI (const Cloud& cloud, double radius, int runs)
   return gudhi;
 }
 
+struct EdgeCollapseMeasurement {
+  bool ran = false;
+  Stats collapse, persistence; // GUDHI's collapse; our H0 + H1 on the edges it keeps
+  std::size_t kept_edges = 0;
+  pcl::tda::PersistenceDiagram diagram;
+};
+
+/** Edge collapse as a step before our H0 + H1 (thesis-independent; Boissonnat and
+ * Pritam, SoCG 2020, as GUDHI 3.7 implements it after Glisse and Pritam, SoCG 2022):
+ * GUDHI's collapse of our edges, which keeps the diagram of the flag filtration, then
+ * our H0 and H1 (triangles enumerated, as by default) on the edges it keeps. */
+EdgeCollapseMeasurement
+measureEdgeCollapse (const pcl::tda::FilteredComplex& complex, int runs)
+{
+  using GUDHIEdge = std::tuple<pcl::tda::SimplexIndex, pcl::tda::SimplexIndex, double>;
+  std::vector<GUDHIEdge> edges;
+  edges.reserve (complex.numEdges());
+  for (const auto& edge : complex.edges())
+    edges.emplace_back (edge.source, edge.target, edge.value);
+
+  EdgeCollapseMeasurement measurement;
+  std::vector<double> collapse, persistence;
+  while (needsRun (collapse, runs)) {
+    const auto start = Clock::now();
+    const auto kept = Gudhi::collapse::flag_complex_collapse_edges (edges);
+    collapse.push_back (secondsSince (start));
+    std::vector<pcl::tda::FilteredEdge> kept_edges;
+    kept_edges.reserve (kept.size());
+    for (const auto& [u, v, value] : kept)
+      kept_edges.push_back ({std::min (u, v), std::max (u, v), value});
+    std::sort (kept_edges.begin(), kept_edges.end(), pcl::tda::EdgeFiltrationLess());
+    measurement.kept_edges = kept_edges.size();
+    const pcl::tda::FilteredComplex collapsed = pcl::tda::FilteredComplex (
+        complex.numVertices(), std::move (kept_edges), {}, complex.pointIndices());
+
+    const auto persistence_start = Clock::now();
+    const pcl::tda::PersistenceResult h0 = pcl::tda::computeH0Persistence (collapsed);
+    const pcl::tda::CliqueH1Persistence h1 =
+        pcl::tda::computeCliqueH1Persistence (collapsed, h0);
+    persistence.push_back (secondsSince (persistence_start));
+    measurement.diagram = h0.diagram (collapsed, 0);
+    measurement.diagram.insert (
+        measurement.diagram.end(), h1.diagram.begin(), h1.diagram.end());
+  }
+  measurement.ran = true;
+  measurement.collapse = summarize (collapse);
+  measurement.persistence = summarize (persistence);
+  return measurement;
+}
+
 // ---------------------------------------------------------------------------------
 // Radius search
 
@@ -699,9 +753,10 @@ struct Results {
   std::size_t memory_loaded = 0, memory_ours = 0, memory_end = 0;
   ProcessMeasurement ours_process, ripser, ripser_sparse;
   bool process_agrees = false, ripser_agrees = false, sparse_agrees = false;
-  bool gudhi_agrees = false;
+  bool gudhi_agrees = false, collapse_agrees = false;
   std::size_t sparse_missing = 0;
   GUDHIMeasurement gudhi;
+  EdgeCollapseMeasurement collapse;
   std::vector<PHATMeasurement> phat;
   std::vector<EngineMeasurement> engines;
 
@@ -709,7 +764,8 @@ struct Results {
   allAgree () const
   {
     bool agree = process_agrees && (!ripser.ran || ripser_agrees) &&
-                 (!ripser_sparse.ran || sparse_agrees) && (!gudhi.ran || gudhi_agrees);
+                 (!ripser_sparse.ran || sparse_agrees) &&
+                 (!gudhi.ran || gudhi_agrees) && (!collapse.ran || collapse_agrees);
     for (const auto& measurement : phat)
       agree &= measurement.agree;
     for (const auto& engine : engines)
@@ -922,6 +978,20 @@ printReport (const Options& options,
           agreement (results.gudhi_agrees),
           "");
   }
+  if (results.collapse.ran) {
+    line ("GUDHI edge collapse of our edges",
+          results.collapse.collapse,
+          times (results.collapse.collapse.median, ours.h0.median + ours.h1.median),
+          "ours: H0 + H1",
+          "",
+          "");
+    line ("ours: H0 + H1 on the collapsed edges",
+          results.collapse.persistence,
+          times (results.collapse.persistence.median, ours.h0.median + ours.h1.median),
+          "ours: H0 + H1",
+          agreement (results.collapse_agrees),
+          "");
+  }
   for (const auto& measurement : results.phat) {
     line ("PHAT boundary matrix for " + measurement.name,
           measurement.matrix,
@@ -955,7 +1025,8 @@ printReport (const Options& options,
        {std::make_tuple (true, results.process_agrees, "pcl_tda_barcode"),
         std::make_tuple (results.ripser.ran, results.ripser_agrees, "ripser"),
         std::make_tuple (results.ripser_sparse.ran, results.sparse_agrees, "sparse"),
-        std::make_tuple (results.gudhi.ran, results.gudhi_agrees, "gudhi")})
+        std::make_tuple (results.gudhi.ran, results.gudhi_agrees, "gudhi"),
+        std::make_tuple (results.collapse.ran, results.collapse_agrees, "collapse")})
     if (ran && !agrees)
       differ += std::string (differ.empty() ? "" : ", ") + tool;
 
@@ -997,6 +1068,41 @@ printReport (const Options& options,
                          : "-",
        ratio_or_dash (results.gudhi.ran, results.gudhi.total.median, ours.total.median),
        differ.empty() ? "equal" : "DIFFER: " + differ});
+
+  if (results.collapse.ran) {
+    const EdgeCollapseMeasurement& collapse = results.collapse;
+    const double ours_persistence = ours.h0.median + ours.h1.median;
+    const double with_collapse = collapse.collapse.median + collapse.persistence.median;
+    std::printf ("\n### Edge collapse before H0 + H1 (GUDHI's collapse, then ours; "
+                 "x = ours without it / with it)\n\n");
+    printHeader ({"input",
+                  "points",
+                  "radius",
+                  "edges",
+                  "kept edges",
+                  "ours H0 + H1 s",
+                  "GUDHI collapse s",
+                  "ours H0 + H1 after it s",
+                  "together s",
+                  "x",
+                  "diagrams"});
+    printRow ({results.name,
+               std::to_string (results.points),
+               formatDouble (options.radius),
+               std::to_string (complex.numEdges()),
+               std::to_string (collapse.kept_edges) + " (" +
+                   std::to_string (static_cast<int> (
+                       std::lround (100.0 * static_cast<double> (collapse.kept_edges) /
+                                    static_cast<double> (std::max<std::size_t> (
+                                        complex.numEdges(), 1))))) +
+                   " %)",
+               seconds (ours_persistence),
+               spread (collapse.collapse),
+               spread (collapse.persistence),
+               seconds (with_collapse),
+               times (ours_persistence, with_collapse),
+               agreement (results.collapse_agrees)});
+  }
 
   if (!results.phat.empty() || !results.engines.empty()) {
     std::printf ("\n### H1 on the same complex: our engines vs PHAT's reductions "
@@ -1126,6 +1232,14 @@ printJSON (const Options& options, const OursMeasurement& ours, const Results& r
         << ", \"ratio\": " << results.gudhi.total.median / ours.total.median
         << ", \"agree\": " << json (results.gudhi_agrees)
         << ", \"simplices\": " << results.gudhi.simplices << "}";
+  else
+    out << "null";
+  out << ", \"gudhi_collapse\": ";
+  if (results.collapse.ran)
+    out << "{\"collapse\": " << json (results.collapse.collapse)
+        << ", \"persistence_after\": " << json (results.collapse.persistence)
+        << ", \"kept_edges\": " << results.collapse.kept_edges
+        << ", \"agree\": " << json (results.collapse_agrees) << "}";
   else
     out << "null";
   out << ", \"phat\": ";
@@ -1276,6 +1390,12 @@ benchmark (const Options& options, const std::string& self)
       std::printf ("GUDHI's complex has %zu simplices, ours %zu.\n",
                    results.gudhi.simplices,
                    complex.numSimplices());
+  }
+  if (wants ("gudhi-collapse")) {
+    results.collapse = measureEdgeCollapse (complex, runs);
+    results.collapse_agrees = agree ("ours vs ours after GUDHI's edge collapse",
+                                     ours.diagram,
+                                     results.collapse.diagram);
   }
   if (std::any_of (PHAT_REDUCTIONS.begin(),
                    PHAT_REDUCTIONS.end(),
