@@ -179,7 +179,7 @@ computeCliqueH1Persistence (const FilteredComplex& skeleton,
   const auto threads_for = [threads] (std::uint64_t work,
                                       std::uint64_t work_per_thread) {
     if (threads > 0)
-      return static_cast<int> (threads);
+      return resolveThreads (threads);
     return static_cast<int> (std::clamp<std::uint64_t> (
         work / work_per_thread, 1, static_cast<std::uint64_t> (resolveThreads (0))));
   };

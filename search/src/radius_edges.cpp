@@ -1,4 +1,5 @@
 #include <pcl/tda/common/large_vector.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/tda/search/radius_edges.h>
 
 #include <omp.h>
@@ -12,14 +13,15 @@ namespace tda {
 int
 resolveThreads (unsigned int threads)
 {
-  return threads > 0 ? static_cast<int> (threads) : omp_get_max_threads();
+  return threads > 0 ? static_cast<int> (std::min (threads, MAX_THREADS))
+                     : omp_get_max_threads();
 }
 
 unsigned int
 threadsForPoints (unsigned int threads, std::size_t points)
 {
   if (threads > 0)
-    return threads;
+    return std::min (threads, MAX_THREADS);
   const auto most = static_cast<std::size_t> (resolveThreads (0));
   return static_cast<unsigned int> (
       std::clamp<std::size_t> (points / POINTS_PER_THREAD, 1, most));

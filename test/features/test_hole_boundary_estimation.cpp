@@ -568,6 +568,19 @@ TEST (HoleBoundaryEstimation, WarnsThatFeatureSearchSettingsAreNotUsed)
       << warning;
   EXPECT_FALSE (flags.empty());
   EXPECT_NE (estimation.getUsedRadius(), 0.05);
+
+  // A search surface other than the input: not used either, and said so; the same
+  // holes as without it.
+  const std::size_t holes = estimation.getHoles().size();
+  Estimation with_surface;
+  with_surface.setInputCloud (positionsOf (surface));
+  with_surface.setSearchSurface (positionsOf (generate (HoleSurfaceKind::PLANE, 2)));
+  testing::internal::CaptureStderr();
+  with_surface.compute (flags);
+  const std::string surface_warning = testing::internal::GetCapturedStderr();
+  EXPECT_NE (surface_warning.find ("setSearchSurface() is not used"), std::string::npos)
+      << surface_warning;
+  EXPECT_EQ (with_surface.getHoles().size(), holes);
 }
 
 TEST (HoleBoundaryEstimation, ReportsProgressOfBothHalves)

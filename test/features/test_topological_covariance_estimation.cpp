@@ -146,6 +146,36 @@ TEST (TopologicalCovarianceEstimation, SameSignatureForAnyInputOrderAndThreadCou
   }
 }
 
+// Through a pcl::Feature reference (as a pipeline holding feature estimators calls
+// them): one point, the signature (it was one point per input point, all but the
+// first zero); with no index, empty (it wrote through a null pointer).
+TEST (TopologicalCovarianceEstimation, OneSignatureThroughTheFeatureBase)
+{
+  pcl::PointCloud<pcl::PointXYZRGB>::Ptr cloud;
+  pcl::PointCloud<pcl::Normal>::Ptr normals;
+  makePatch (2, cloud, normals);
+  Estimation estimation;
+  estimation.setInputCloud (cloud);
+  estimation.setInputNormals (normals);
+  pcl::Feature<pcl::PointXYZRGB, pcl::tda::CovarianceSignature>& feature = estimation;
+  pcl::PointCloud<pcl::tda::CovarianceSignature> output;
+  feature.compute (output);
+  ASSERT_EQ (output.size(), 1u);
+  EXPECT_EQ (output.width, 1u);
+  EXPECT_EQ (output.height, 1u);
+  const auto reference = signatureOf (cloud, normals);
+  ASSERT_EQ (reference.size(), 1u);
+  EXPECT_EQ (std::memcmp (output[0].histogram,
+                          reference[0].histogram,
+                          sizeof (reference[0].histogram)),
+             0);
+
+  estimation.setIndices (pcl::make_shared<pcl::Indices>());
+  feature.compute (output);
+  EXPECT_TRUE (output.empty());
+  EXPECT_EQ (estimation.getUsedRadius(), 0.0);
+}
+
 TEST (TopologicalCovarianceEstimation, BettiValuesSeeStrayPoints)
 {
   // Stray points far from the patch keep their components through every step:

@@ -1,6 +1,7 @@
 #include <pcl/common/point_tests.h>
 #include <pcl/io/pcd_io.h>
 #include <pcl/search/kdtree.h>
+#include <pcl/search/organized.h>
 #include <pcl/tda/search/vietoris_rips_builder.h>
 #include <pcl/point_types.h>
 
@@ -189,6 +190,26 @@ TEST (VietorisRipsBuilder, SameComplexForShuffledInputThreadsAndSearchMethods)
   }
 }
 
+// A thread count past MAX_THREADS (-1 given as an unsigned count: OpenMP asked for
+// terabytes and ended the process) is taken as MAX_THREADS, the same complex.
+TEST (VietorisRipsBuilder, ThreadCountCappedAtTheMost)
+{
+  std::mt19937 random (5);
+  const Cloud::Ptr cloud = randomCloud (random, 500, true);
+  VietorisRipsBuilder<pcl::PointXYZ> builder;
+  builder.setInputCloud (cloud);
+  builder.setRadius (0.3);
+  FilteredComplex reference, other;
+  builder.setNumberOfThreads (1);
+  ASSERT_TRUE (builder.compute (reference));
+  builder.setNumberOfThreads (static_cast<unsigned int> (-1));
+  EXPECT_EQ (builder.getNumberOfThreads(), pcl::tda::MAX_THREADS);
+  ASSERT_TRUE (builder.compute (other));
+  EXPECT_EQ (test::complexDifference (reference, other), "");
+  EXPECT_EQ (pcl::tda::resolveThreads (static_cast<unsigned int> (-1)),
+             static_cast<int> (pcl::tda::MAX_THREADS));
+}
+
 TEST (VietorisRipsBuilder, EdgesOnlyAndIndices)
 {
   std::mt19937 random (3);
@@ -226,6 +247,30 @@ TEST (VietorisRipsBuilder, EdgeOfLengthExactlyRadiusIsIn)
   ASSERT_EQ (complex.numEdges(), 2u);
   EXPECT_EQ (complex.edges()[1].value, 1.0);
   EXPECT_EQ (complex.numTriangles(), 0u);
+}
+
+// An OrganizedNeighbor on a cloud without rows and columns finds nothing: refused
+// (every point was a component of its own); on the same points as rows and
+// columns, the grid's complex.
+TEST (VietorisRipsBuilder, RefusesASearchMethodThatCannotSearchTheCloud)
+{
+  Cloud::Ptr grid (new Cloud);
+  for (int row = 0; row < 10; ++row)
+    for (int column = 0; column < 10; ++column)
+      grid->push_back ({0.01f * column, 0.01f * row, 1.0f});
+  VietorisRipsBuilder<pcl::PointXYZ> builder;
+  builder.setInputCloud (grid);
+  builder.setRadius (0.015);
+  FilteredComplex reference, complex;
+  ASSERT_TRUE (builder.compute (reference));
+  builder.setSearchMethod (pcl::search::OrganizedNeighbor<pcl::PointXYZ>::Ptr (
+      new pcl::search::OrganizedNeighbor<pcl::PointXYZ>));
+  EXPECT_FALSE (builder.compute (complex));
+  EXPECT_EQ (complex.numSimplices(), 0u);
+  grid->width = 10;
+  grid->height = 10;
+  ASSERT_TRUE (builder.compute (complex));
+  EXPECT_EQ (test::complexDifference (reference, complex), "");
 }
 
 TEST (VietorisRipsBuilder, RefusesBadInput)

@@ -382,6 +382,9 @@ TEST (PersistentRegionGrowingRGB, RefusesBadInput)
     g.setMaxClusterSize (5);
   }));
   EXPECT_TRUE (refused ([] (RegionGrowing& g) { g.setMemoryLimit (1000); }));
+  EXPECT_TRUE (refused ([] (RegionGrowing& g) {
+    g.setFiltration (static_cast<RegionGrowing::Filtration> (7)); // was DISTANCE
+  }));
   // Indices past the cloud (a crash) or repeated.
   EXPECT_TRUE (refused ([] (RegionGrowing& g) {
     g.setIndices (pcl::IndicesPtr (new pcl::Indices{0, 1, 50000000}));

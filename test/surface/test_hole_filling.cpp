@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <vector>
 
 namespace {
@@ -269,6 +270,27 @@ TEST (HoleFilling, BadInput)
     EXPECT_TRUE (filled.empty());
     filler.setMode (pcl::tda::HoleFilling<pcl::PointXYZ>::Mode::CENTROID);
     EXPECT_TRUE (filler.reconstruct (filled)) << spacing;
+  }
+  {
+    // A mode outside the enum (it searched a tree never built: a segfault).
+    using Filler = pcl::tda::HoleFilling<pcl::PointXYZ>;
+    Filler filler;
+    filler.setInputCloud (detected.cloud);
+    filler.setHoles (detected.holes);
+    EXPECT_EQ (filler.getHoles().size(), detected.holes.size());
+    filler.setMode (static_cast<Filler::Mode> (2));
+    EXPECT_FALSE (filler.reconstruct (filled));
+    EXPECT_TRUE (filled.empty());
+    // Indices, which it ignored: refused, but those of every point in order.
+    filler.setMode (Filler::Mode::CENTROID);
+    filler.setIndices (pcl::make_shared<pcl::Indices> (pcl::Indices{0, 1, 2}));
+    EXPECT_FALSE (filler.reconstruct (filled));
+    EXPECT_TRUE (filled.empty());
+    auto all = pcl::make_shared<pcl::Indices> (detected.cloud->size());
+    std::iota (all->begin(), all->end(), 0);
+    filler.setIndices (all);
+    ASSERT_TRUE (filler.reconstruct (filled));
+    EXPECT_EQ (filled.size(), detected.cloud->size() + detected.holes.size());
   }
   {
     pcl::tda::HoleFilling<pcl::PointXYZ> filler; // no holes: the input as it is

@@ -1,11 +1,18 @@
 #pragma once
 
+#include <pcl/console/print.h>
 #include <pcl/tda/common/system_memory.h>
 
+#include <algorithm>
 #include <cstddef>
 
 namespace pcl {
 namespace tda {
+
+/** \brief The most OpenMP threads a computation of this library starts: more gain
+ * nothing, and a count near 2^31 (-1 given as an unsigned count) had OpenMP ask for
+ * terabytes and end the process. */
+constexpr unsigned int MAX_THREADS = 256;
 
 /** \brief What a computation of this library may use, with PCL-style setters: the
  * memory of its largest structure and the number of threads. One set for every
@@ -33,11 +40,18 @@ public:
     return memory_limit_;
   }
 
-  /** \brief Sets the number of OpenMP threads (0: OpenMP's default). */
+  /** \brief Sets the number of OpenMP threads (0: OpenMP's default), at most
+   * MAX_THREADS: a larger count is taken as MAX_THREADS, with a PCL_WARN. */
   void
   setNumberOfThreads (unsigned int threads)
   {
-    threads_ = threads;
+    if (threads > MAX_THREADS)
+      PCL_WARN ("[pcl::tda::setNumberOfThreads] %u threads asked for: %u are used "
+                "(at most %u; 0 chooses OpenMP's default).\n",
+                threads,
+                MAX_THREADS,
+                MAX_THREADS);
+    threads_ = std::min (threads, MAX_THREADS);
   }
 
   unsigned int

@@ -57,16 +57,18 @@ checkMaxPoints (std::size_t max_points, double radius, const std::string& class_
  * after a PCL_ERROR naming the class \a class_name, when there is no input
  * (\a has_input: what pcl::PCLBase::initCompute() returned); else true, after a
  * PCL_WARN when pcl::Feature's search settings were given: \a search_radius
- * (setRadiusSearch()), \a k (setKSearch()) or a search tree (setSearchMethod()).
- * The classes build their own complex, of the radius set by their setRadius(), and a
- * PCL user who set these as for pcl::BoundaryEstimation would otherwise not know
- * they were ignored. */
+ * (setRadiusSearch()), \a k (setKSearch()) or a search tree (setSearchMethod()),
+ * and another when a search surface other than the input was (setSearchSurface(),
+ * \a has_other_surface). The classes build their own complex of the indexed input
+ * points, of the radius set by their setRadius(), and a PCL user who set these as
+ * for pcl::BoundaryEstimation would otherwise not know they were ignored. */
 inline bool
 checkFeatureInput (bool has_input,
                    const std::string& class_name,
                    double search_radius,
                    int k,
-                   bool has_search_tree)
+                   bool has_search_tree,
+                   bool has_other_surface)
 {
   if (!has_input) {
     PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
@@ -77,6 +79,10 @@ checkFeatureInput (bool has_input,
     PCL_WARN ("[pcl::tda::%s::compute] setRadiusSearch(), setKSearch() and "
               "setSearchMethod() are not used: the complex's radius is setRadius() "
               "(0: chosen from the point spacing).\n",
+              class_name.c_str());
+  if (has_other_surface)
+    PCL_WARN ("[pcl::tda::%s::compute] setSearchSurface() is not used: the complex "
+              "is that of the indexed input points.\n",
               class_name.c_str());
   return true;
 }

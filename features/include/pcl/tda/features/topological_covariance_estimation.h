@@ -91,11 +91,6 @@ public:
     return max_points_;
   }
 
-  /** \brief Overrides pcl::Feature::compute(): one signature for the whole cloud
-   * (the indexed points); an empty output, with a PCL_ERROR, on failure. */
-  void
-  compute (PointCloudOut& output);
-
   /** \brief The radius r used by the last compute(). */
   double
   getUsedRadius () const
@@ -109,11 +104,15 @@ protected:
   using pcl::Feature<PointInT, PointOutT>::input_;
   using pcl::FeatureFromNormals<PointInT, PointNT, PointOutT>::normals_;
 
-  /** \brief Checks the input, the normals and the parameters; no search radius or
-   * k is needed and no search tree is built. */
+  /** \brief Clears the radius of the last compute(), then checks the input, the
+   * normals and the parameters; no search radius or k is needed and no search tree is
+   * built. */
   bool
   initCompute () override;
 
+  /** \brief One signature for the whole cloud (the indexed points): \a output
+   * becomes one point (pcl::Feature::compute() sized it for every indexed point);
+   * empty, with a PCL_ERROR, on failure. */
   void
   computeFeature (PointCloudOut& output) override;
 

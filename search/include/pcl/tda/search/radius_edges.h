@@ -31,8 +31,8 @@ struct AcceptAllPairs {
   }
 };
 
-/** \brief OpenMP threads for a parallel loop: \a threads, or OpenMP's default for 0.
- */
+/** \brief OpenMP threads for a parallel loop: \a threads (at most MAX_THREADS), or
+ * OpenMP's default for 0. */
 int
 resolveThreads (unsigned int threads);
 

@@ -32,7 +32,8 @@ namespace tda {
  *   the height field.
  *
  * A new point copies the fields of the rim point nearest to it (colour, intensity,
- * label, ...) and takes its own x, y, z.
+ * label, ...) and takes its own x, y, z. The whole input cloud is filled: indices
+ * (setIndices()) are refused.
  *
  * \code
  * pcl::tda::HoleFilling<pcl::PointXYZ> filler;
@@ -56,6 +57,12 @@ public:
   setHoles (const std::vector<HoleRim>& holes)
   {
     holes_ = holes;
+  }
+
+  const std::vector<HoleRim>&
+  getHoles () const
+  {
+    return holes_;
   }
 
   /** \brief Sets the mode (default SURFACE). */
@@ -120,6 +127,7 @@ public:
 
 protected:
   using pcl::PCLBase<PointT>::input_;
+  using pcl::PCLBase<PointT>::indices_;
   using pcl::PCLBase<PointT>::initCompute;
   using pcl::PCLBase<PointT>::deinitCompute;
 

@@ -27,7 +27,8 @@ HoleBoundaryEstimation<PointInT, PointOutT>::initCompute()
                           getClassName(),
                           this->search_radius_,
                           this->k_,
-                          this->tree_ != nullptr))
+                          this->tree_ != nullptr,
+                          this->surface_ && this->surface_ != input_))
     return false;
   if (!indicesAreValid (getClassName() + "::compute", input_->size(), *indices_) ||
       !checkOptionalLength (radius_, getClassName(), "radius", "to choose it"))

@@ -22,7 +22,8 @@ STPPEstimation<PointInT, PointOutT>::initCompute()
                           getClassName(),
                           this->search_radius_,
                           this->k_,
-                          this->tree_ != nullptr))
+                          this->tree_ != nullptr,
+                          this->surface_ && this->surface_ != input_))
     return false;
   if (homology_ != STPPHomology::BETTI_0 && homology_ != STPPHomology::BETTI_1 &&
       homology_ != STPPHomology::BETTI_0_1) {

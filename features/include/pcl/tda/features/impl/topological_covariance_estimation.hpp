@@ -21,6 +21,7 @@ template <typename PointInT, typename PointNT, typename PointOutT>
 bool
 TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::initCompute()
 {
+  used_radius_ = 0.0;
   if (!pcl::PCLBase<PointInT>::initCompute()) {
     PCL_ERROR ("[pcl::tda::%s::compute] No input cloud: call setInputCloud().\n",
                getClassName().c_str());
@@ -43,25 +44,6 @@ TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::initCompute()
   }
   return checkOptionalLength (radius_, getClassName(), "radius", "to choose it") &&
          checkMaxPoints (max_points_, radius_, getClassName());
-}
-
-template <typename PointInT, typename PointNT, typename PointOutT>
-void
-TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::compute (
-    PointCloudOut& output)
-{
-  used_radius_ = 0.0;
-  if (!initCompute()) {
-    output.width = output.height = 0;
-    output.clear();
-    return;
-  }
-  output.header = input_->header;
-  output.width = output.height = 1;
-  output.is_dense = true;
-  output.resize (1);
-  computeFeature (output);
-  this->deinitCompute();
 }
 
 template <typename PointInT, typename PointNT, typename PointOutT>
@@ -147,6 +129,9 @@ void
 TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::computeFeature (
     PointCloudOut& output)
 {
+  output.width = output.height = 1;
+  output.is_dense = true;
+  output.resize (1);
   float* values = output[0].histogram;
   std::fill (values, values + COVARIANCE_SIGNATURE_SIZE, 0.0f);
   if (!computeSignature (values)) {

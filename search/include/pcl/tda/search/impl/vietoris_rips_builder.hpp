@@ -13,6 +13,8 @@
 #include <pcl/tda/search/vietoris_rips_phases.h>
 #include <pcl/exceptions.h>
 
+#include <algorithm>
+#include <atomic>
 #include <memory>
 #include <vector>
 
@@ -86,6 +88,10 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
     std::vector<SimplexIndex> vertex_of_input (input_->size(), INVALID_SIMPLEX);
     for (std::size_t v = 0; v < order.size(); ++v)
       vertex_of_input[order[v]] = static_cast<SimplexIndex> (v);
+    // A search that cannot search the cloud (an OrganizedNeighbor on a cloud without
+    // rows and columns) finds nothing, not even a point near itself: every point
+    // would be alone.
+    std::atomic<bool> missed_itself{false};
     const CandidateSearch candidates = [&] (SimplexIndex vertex,
                                             std::vector<SimplexIndex>& out) {
       pcl::Indices found;
@@ -93,9 +99,14 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
       search_->radiusSearch (
           (*input_)[order[vertex]], search_radius, found, squared_distances);
       out.clear();
-      for (const auto index : found)
+      bool itself = false;
+      for (const auto index : found) {
+        itself = itself || index == order[vertex];
         if (vertex_of_input[index] != INVALID_SIMPLEX)
           out.push_back (vertex_of_input[index]);
+      }
+      if (!itself)
+        missed_itself.store (true, std::memory_order_relaxed);
     };
     std::vector<std::uint64_t> offsets;
     const auto count_edges = [&] () {
@@ -120,6 +131,13 @@ VietorisRipsBuilder<PointT>::compute (FilteredComplex& complex)
       return fail();
     progress.reach (VietorisRipsProgress::EDGES_COUNTED);
     edges = listEdgesBySearch (points, radius_, candidates, offsets, threads_);
+    if (missed_itself) {
+      PCL_ERROR ("[pcl::tda::%s::compute] The search method did not find some points "
+                 "of the input near themselves: it cannot search this cloud (an "
+                 "OrganizedNeighbor needs an organized cloud).\n",
+                 getClassName().c_str());
+      return fail();
+    }
     progress.reach (VietorisRipsProgress::EDGES_LISTED);
   }
   else {

@@ -25,6 +25,12 @@ PersistentRegionGrowingRGB<PointT, NormalT>::checkParameters() const
   const char* name = getClassName().c_str();
   if (!indicesAreValid (getClassName() + "::extract", input_->size(), *indices_))
     return false;
+  if (filtration_ != Filtration::COLOR && filtration_ != Filtration::DISTANCE) {
+    PCL_ERROR ("[pcl::tda::%s::extract] Unknown filtration %d: COLOR or DISTANCE.\n",
+               name,
+               static_cast<int> (filtration_));
+    return false;
+  }
   if (normals_ && normals_->size() != input_->size()) {
     PCL_ERROR ("[pcl::tda::%s::extract] The normals (%zu) are not one per input point "
                "(%zu).\n",

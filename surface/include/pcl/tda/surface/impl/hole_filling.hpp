@@ -27,6 +27,18 @@ constexpr double SURROUNDING_SPACINGS = 3.0;
 /** A new point keeps at least this many spacings from every surrounding point. */
 constexpr double MIN_GAP_SPACINGS = 0.7;
 
+/** Whether \a indices are 0, 1, ..., \a size - 1. */
+inline bool
+isIdentity (const pcl::Indices& indices, std::size_t size)
+{
+  if (indices.size() != size)
+    return false;
+  for (std::size_t i = 0; i < size; ++i)
+    if (indices[i] != static_cast<pcl::index_t> (i))
+      return false;
+  return true;
+}
+
 } // namespace hole_filling_detail
 
 template <typename PointT>
@@ -39,6 +51,22 @@ HoleFilling<PointT>::reconstruct (pcl::PointCloud<PointT>& output)
   if (!initCompute()) {
     PCL_ERROR ("[pcl::tda::%s::reconstruct] No input cloud: call setInputCloud().\n",
                class_name_.c_str());
+    return false;
+  }
+  if (mode_ != Mode::CENTROID && mode_ != Mode::SURFACE) {
+    PCL_ERROR ("[pcl::tda::%s::reconstruct] Unknown mode %d: CENTROID or SURFACE.\n",
+               class_name_.c_str(),
+               static_cast<int> (mode_));
+    deinitCompute();
+    return false;
+  }
+  if (!this->fake_indices_ &&
+      !hole_filling_detail::isIdentity (*indices_, input_->size())) {
+    PCL_ERROR ("[pcl::tda::%s::reconstruct] Indices are not supported: the output is "
+               "the whole input cloud and the new points. Fill a cloud of the indexed "
+               "points (pcl::copyPointCloud) with the holes found on it.\n",
+               class_name_.c_str());
+    deinitCompute();
     return false;
   }
   for (const HoleRim& hole : holes_)
