@@ -19,6 +19,7 @@
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/error_message.h>
 #include <pcl/tda/common/progress_bar.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/tda/search/parallel_progress.h>
 #include <pcl/exceptions.h>
 #include <pcl/point_types.h>
@@ -89,7 +90,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addInteger ("-folds", options.folds, 0, 1000);
   command_line.addInteger ("-seed", options.seed, 0, std::numeric_limits<long>::max());
   command_line.addText ("-scaling", options.scaling);
-  command_line.addInteger ("-threads", options.threads, 1, 1024);
+  command_line.addInteger ("-threads", options.threads, 1, pcl::tda::MAX_THREADS);
   command_line.addText ("-csv", options.csv);
   command_line.addText ("-features", options.features);
   command_line.addText ("-svg", options.svg);

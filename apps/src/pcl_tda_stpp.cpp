@@ -10,6 +10,7 @@
 #include <pcl/tda/apps/view_files.h>
 #include <pcl/tda/common/atomic_file.h>
 #include <pcl/tda/common/error_message.h>
+#include <pcl/tda/common/resource_settings.h>
 #include <pcl/tda/common/system_memory.h>
 #include <pcl/exceptions.h>
 
@@ -97,7 +98,7 @@ parseOptions (int argc, char** argv, Options& options)
   command_line.addNumber (
       "-radius", options.radius, pcl::tda::NumberRange::above (0.0));
   command_line.addMemory ("-memory", options.memory_limit);
-  command_line.addInteger ("-threads", options.threads, 1, 1024);
+  command_line.addInteger ("-threads", options.threads, 1, pcl::tda::MAX_THREADS);
   const std::vector<std::string> arguments = command_line.parse (argc, argv);
   if (arguments.empty())
     PCL_THROW_EXCEPTION (pcl::BadArgumentException, "Missing the output CSV file.");

@@ -271,6 +271,7 @@ TEST (STPPTool, RefusesBadInputAndWritesNothing)
                                        csv + " " + paths[0] + " -radius -1",
                                        csv + " " + paths[0] + " -radius abc",
                                        csv + " " + paths[0] + " -threads 0",
+                                       csv + " " + paths[0] + " -threads 257",
                                        csv + " " + paths[0] + " -memory 0",
                                        csv + " " + paths[0] + " -memory abc",
                                        csv + " " + paths[0] + " -unknown 1",
