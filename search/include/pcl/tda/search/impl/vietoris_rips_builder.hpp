@@ -13,7 +13,6 @@
 #include <pcl/tda/search/vietoris_rips_phases.h>
 #include <pcl/exceptions.h>
 
-#include <algorithm>
 #include <atomic>
 #include <memory>
 #include <vector>
