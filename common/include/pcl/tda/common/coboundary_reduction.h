@@ -40,55 +40,47 @@ threadProcessorSeconds ()
   return static_cast<double> (now.tv_sec) + 1e-9 * static_cast<double> (now.tv_nsec);
 }
 
-/** \brief The columns a coboundary reduction keeps for later additions, one after
- * another in a few large blocks: the reduced column of a paired edge, or the
- * coboundary of an apparent pair's edge once some column needs it. A column is
+/** \brief The columns a coboundary reduction keeps for later additions, the reduced
+ * columns of the edges it pairs, one after another in a few large blocks. A column is
  * stored once and never changes, so blocks and a pointer per edge replace a map of
  * vectors (tens of thousands of allocations on a real scan); a block is never moved
  * (a full one is followed by a new one), so that storing costs no copy of the columns
- * stored before. Threads store into blocks of their own and read all columns at
- * once: a column is published by its pointer, after its keys. \a Key names a
- * triangle. */
+ * stored before. One thread stores, between the parallel phases that read. \a Key
+ * names a triangle. */
 template <typename Key>
 class StoredColumns {
 public:
-  /** \param[in] num_edges the edges, ids 0 to num_edges - 1
-   * \param[in] threads the threads that store, numbered from 0 */
-  StoredColumns (std::size_t num_edges, int threads)
+  /** \param[in] num_edges the edges, ids 0 to num_edges - 1 */
+  explicit StoredColumns (std::size_t num_edges)
   : column_ (largeVector<const Key*> (num_edges, nullptr))
-  , blocks_ (static_cast<std::size_t> (threads))
   {}
 
   bool
   has (SimplexIndex edge) const
   {
-    return __atomic_load_n (&column_[edge], __ATOMIC_ACQUIRE) != nullptr;
+    return column_[edge] != nullptr;
   }
 
-  /** \brief Stores \a column (its keys) as the column of \a edge, from thread
-   * \a thread. Two threads may store the same edge at once when they store the same
-   * keys (a coboundary): either copy is read. */
+  /** \brief Stores \a column (its keys) as the column of \a edge. */
   void
-  store (SimplexIndex edge, const std::vector<Key>& column, int thread = 0)
+  store (SimplexIndex edge, const std::vector<Key>& column)
   {
-    std::vector<std::vector<Key>>& blocks = blocks_[static_cast<std::size_t> (thread)];
     const std::size_t size = column.size() + 1; // the keys after their number
-    if (blocks.empty() || blocks.back().capacity() - blocks.back().size() < size) {
-      blocks.emplace_back();
-      blocks.back().reserve (std::max (BLOCK_KEYS, size));
+    if (blocks_.empty() || blocks_.back().capacity() - blocks_.back().size() < size) {
+      blocks_.emplace_back();
+      blocks_.back().reserve (std::max (BLOCK_KEYS, size));
     }
-    std::vector<Key>& block = blocks.back();
-    const Key* stored = block.data() + block.size();
+    std::vector<Key>& block = blocks_.back();
+    column_[edge] = block.data() + block.size();
     block.push_back (static_cast<Key> (column.size()));
     block.insert (block.end(), column.begin(), column.end());
-    __atomic_store_n (&column_[edge], stored, __ATOMIC_RELEASE);
   }
 
   /** The stored column of \a edge as [first, last). */
   std::pair<const Key*, const Key*>
   column (SimplexIndex edge) const
   {
-    const Key* stored = __atomic_load_n (&column_[edge], __ATOMIC_ACQUIRE);
+    const Key* stored = column_[edge];
     return {stored + 1, stored + 1 + static_cast<std::size_t> (*stored)};
   }
 
@@ -100,11 +92,9 @@ private:
    * like milk.pcd gave back and faulted in its 3 MB again on every run, and took
    * twice as long. Pages never written are never taken. */
   static constexpr std::size_t BLOCK_KEYS = (std::size_t{8} << 20) / sizeof (Key);
-  /** Per edge: its column's number of keys, followed by the keys; or nullptr. Read
-   * and written atomically (GCC's and Clang's builtins: C++17 has no atomic_ref, and
-   * a vector of std::atomic could not take storage given to adviseHugePages()). */
+  /** Per edge: its column's number of keys, followed by the keys; or nullptr. */
   std::vector<const Key*> column_;
-  std::vector<std::vector<std::vector<Key>>> blocks_; // per thread
+  std::vector<std::vector<Key>> blocks_;
 };
 
 /** \brief Columns per batch of reduceEdgeCoboundaries(). */
@@ -190,23 +180,26 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
   std::vector<Thread> workers;
   for (int t = 0; t < threads; ++t)
     workers.push_back ({coboundaries.commonNeighborSearch(), {}, {}, {}});
-  // The reduced columns of the edges whose columns were added to, an apparent or
-  // emergent pair's (its coboundary, unchanged) only when first needed: few edges
-  // need one.
-  StoredColumns<Key> stored (num_edges, threads);
+  // The reduced columns of the edges whose columns were added to. An apparent or
+  // emergent pair's column is its coboundary, found again each time it is added: on
+  // real scans such a column is added about once (1.0-1.2 times on average), and
+  // storing it cost more in memory written than finding it again.
+  StoredColumns<Key> stored (num_edges);
   // Adds to \a worker's column the columns of the owners of its pivots while they
-  // have one, storing an owner's coboundary the first time it is needed.
-  const auto reduce = [&] (Thread& worker, int thread) {
+  // have one.
+  const auto reduce = [&] (Thread& worker) {
     SimplexIndex owner;
     while (worker.column.findPivot() &&
            (owner = coboundaries.owner (worker.column.pivot())) != INVALID_SIMPLEX) {
-      if (!stored.has (owner)) { // an apparent or emergent pair: its coboundary
-        coboundaries.coboundary (owner, worker.search, worker.scratch);
-        std::sort (worker.scratch.begin(), worker.scratch.end());
-        stored.store (owner, worker.scratch, thread);
+      if (stored.has (owner)) {
+        const auto [first, last] = stored.column (owner);
+        worker.column.add (first, last);
+        continue;
       }
-      const auto [first, last] = stored.column (owner);
-      worker.column.add (first, last);
+      coboundaries.coboundary (owner, worker.search, worker.scratch);
+      std::sort (worker.scratch.begin(), worker.scratch.end());
+      worker.column.add (worker.scratch.data(),
+                         worker.scratch.data() + worker.scratch.size());
     }
   };
 
@@ -229,7 +222,7 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
     if (!unreduced) {
       std::sort (worker.keys.begin(), worker.keys.end());
       worker.column.assign (worker.keys);
-      reduce (worker, thread);
+      reduce (worker);
       worker.column.release (worker.keys);
     }
     keys.swap (worker.keys);
@@ -288,7 +281,7 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
         std::sort (keys.begin(), keys.end());
       }
       worker.column.assign (keys);
-      reduce (worker, 0);
+      reduce (worker);
       if (worker.column.findPivot()) {
         coboundaries.setOwner (worker.column.pivot(), edge);
         stored.store (edge, worker.column.sum());
