@@ -182,7 +182,8 @@ reduceEdgeCoboundaries (const std::vector<std::uint8_t>& edge_positive,
     workers.push_back ({coboundaries.commonNeighborSearch(), {}, {}, {}});
   // The reduced columns of the edges whose columns were added to. An apparent or
   // emergent pair's column is its coboundary, found again each time it is added: on
-  // real scans such a column is added about once (1.0-1.2 times on average), and
+  // real scans such a column is added little more than once (at most 1.14 times on
+  // average on a 100k-point scan at degree 20, 1.25 on kinect_frame.pcd whole), and
   // storing it cost more in memory written than finding it again.
   StoredColumns<Key> stored (num_edges);
   // Adds to \a worker's column the columns of the owners of its pivots while they
