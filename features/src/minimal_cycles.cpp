@@ -3,12 +3,12 @@
 #include <pcl/tda/features/minimal_cycles.h>
 #include <pcl/tda/features/projected_polygon.h>
 #include <pcl/tda/features/star_polygon.h>
+#include <pcl/tda/search/parallel_progress.h>
 #include <pcl/tda/search/radius_edges.h>
 
 #include <omp.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -643,7 +643,8 @@ minimalCycles (const FilteredComplex& complex,
   for (std::size_t k = 0; k < lengths.size(); ++k)
     lengths[k] = edges[adjacency.entries[k].edge].value;
   const std::vector<std::uint8_t> duplicate = nearDuplicates (initial);
-  std::atomic<std::size_t> done{0};
+  // A callback that throws cannot leave the parallel loop: the tracker keeps it.
+  ParallelProgress tracker (progress, initial.size());
 #pragma omp parallel num_threads(resolveThreads(threads))
   {
     // Cells of a quarter of the smallest clearance sought: fine enough to tell it.
@@ -653,11 +654,10 @@ minimalCycles (const FilteredComplex& complex,
     for (std::int64_t i = 0; i < count; ++i) {
       if (!duplicate[i])
         per_class[i] = finder.rims (initial[i].vertices, initial[i].class_edge);
-      const std::size_t searched = ++done;
-      if (progress && omp_get_thread_num() == 0)
-        progress (searched, initial.size());
+      tracker.advance (1);
     }
   }
+  tracker.rethrow();
   std::vector<MinimalCycle> cycles;
   for (auto& rims : per_class)
     for (MinimalCycle& rim : rims)

@@ -17,6 +17,7 @@
 #include <limits>
 #include <numeric>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 namespace {
@@ -603,6 +604,58 @@ TEST (HoleBoundaryEstimation, ReportsProgressOfBothHalves)
   EXPECT_TRUE (within);
   EXPECT_TRUE (ordered);
   EXPECT_GT (largest, 1000u); // the search of the classes reported too
+}
+
+TEST (HoleBoundaryEstimation, ACallbackThatThrowsCancels)
+{
+  // A caller cancelling at a call of its callback: the exception reaches the caller,
+  // also from the search of the classes (1000 to 2000, a parallel loop), where it
+  // ended the process.
+  const HoleSurface surface = generate (HoleSurfaceKind::PLANE, 6);
+  Estimation estimation;
+  estimation.setInputCloud (positionsOf (surface));
+  estimation.setNumberOfThreads (1);
+  std::vector<std::size_t> seen;
+  estimation.setProgressCallback (
+      [&seen] (std::size_t done, std::size_t) { seen.push_back (done); });
+  pcl::PointCloud<pcl::Boundary> flags;
+  estimation.compute (flags);
+  ASSERT_GT (seen.back(), 1000u);
+  // On one thread the calls are the same each time: a sample of them, the first and
+  // the last of the search among them.
+  const auto search = static_cast<std::size_t> (
+      std::find_if (
+          seen.begin(), seen.end(), [] (std::size_t done) { return done > 1000; }) -
+      seen.begin());
+  for (const std::size_t k : {std::size_t{1},
+                              search / 2,
+                              search + 1,
+                              (search + seen.size()) / 2,
+                              seen.size()}) {
+    std::size_t calls = 0;
+    estimation.setProgressCallback ([&calls, k] (std::size_t, std::size_t) {
+      if (++calls == k)
+        throw std::runtime_error ("cancelled");
+    });
+    EXPECT_THROW (estimation.compute (flags), std::runtime_error) << "call " << k;
+  }
+  // On two threads, at the first call of the search, if one comes (only the master
+  // thread reports).
+  estimation.setNumberOfThreads (2);
+  bool thrown = false;
+  estimation.setProgressCallback ([&thrown] (std::size_t done, std::size_t) {
+    if (done > 1000 && !thrown) {
+      thrown = true;
+      throw std::runtime_error ("cancelled");
+    }
+  });
+  try {
+    estimation.compute (flags);
+    EXPECT_FALSE (thrown);
+  }
+  catch (const std::runtime_error&) {
+    EXPECT_TRUE (thrown);
+  }
 }
 
 TEST (HoleBoundaryEstimation, MaxCycleLengthDropsLongRims)

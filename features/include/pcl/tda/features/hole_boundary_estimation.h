@@ -196,7 +196,8 @@ public:
 
   /** \brief Sets a callback told the progress of compute(), as (done, 2000): the
    * complex's construction (0 to 500), its H1 (500 to 1000), then the search of the
-   * initial cycles (1000 to 2000). */
+   * initial cycles (1000 to 2000). Called from the calling thread; it may throw to
+   * cancel the computation, and the exception reaches the caller of compute(). */
   void
   setProgressCallback (const ProgressCallback& progress)
   {
