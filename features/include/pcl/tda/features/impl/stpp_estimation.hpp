@@ -4,6 +4,7 @@
 #include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/features/stpp_estimation.h>
 #include <pcl/tda/features/stpp_sublevel.h>
+#include <pcl/tda/features/whole_cloud_signature.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/point_spacing.h>
 #include <pcl/tda/search/radius_edges.h>
@@ -152,16 +153,10 @@ template <typename PointInT, typename PointOutT>
 void
 STPPEstimation<PointInT, PointOutT>::computeFeature (PointCloudOut& output)
 {
-  output.width = output.height = 1;
-  output.is_dense = true;
-  output.resize (1);
-  float* histogram = output[0].histogram;
-  std::fill (histogram, histogram + STPP_SIGNATURE_SIZE, 0.0f);
-  if (!computeSignature (histogram)) {
+  if (!computeWholeCloudSignature (output, STPP_SIGNATURE_SIZE, [this] (float* values) {
+        return computeSignature (values);
+      }))
     clearResults();
-    output.width = output.height = 0;
-    output.clear();
-  }
 }
 
 } // namespace tda

@@ -7,6 +7,7 @@
 #include <pcl/tda/features/setting_checks.h>
 #include <pcl/tda/features/stpp_levels.h>
 #include <pcl/tda/features/topological_covariance_estimation.h>
+#include <pcl/tda/features/whole_cloud_signature.h>
 #include <pcl/tda/search/canonical_order.h>
 #include <pcl/tda/search/point_spacing.h>
 #include <pcl/type_traits.h>
@@ -129,15 +130,10 @@ void
 TopologicalCovarianceEstimation<PointInT, PointNT, PointOutT>::computeFeature (
     PointCloudOut& output)
 {
-  output.width = output.height = 1;
-  output.is_dense = true;
-  output.resize (1);
-  float* values = output[0].histogram;
-  std::fill (values, values + COVARIANCE_SIGNATURE_SIZE, 0.0f);
-  if (!computeSignature (values)) {
-    output.width = output.height = 0;
-    output.clear();
-  }
+  computeWholeCloudSignature (
+      output, COVARIANCE_SIGNATURE_SIZE, [this] (float* values) {
+        return computeSignature (values);
+      });
 }
 
 } // namespace tda
